@@ -1,0 +1,110 @@
+/* MOPL's distance ("mini empty-space planner with penalties"): an estimate of how far the robot
+   must travel to turn one configuration into another. It adds to the robot's own distance, for
+   every object that must move, a penalty and the object's displacement, plus the legs the tool
+   travels to reach each object (visited greedily, nearest first) and back to its target.
+   Rickert, Sieverling, Brock, "Balancing exploration and exploitation in sampling-based motion
+   planning", IEEE T-RO 2014 / Saoji et al., MOPL (2015), section III-B.3. Directed: d(a, b) is
+   the cost of going from a to b. */
+#pragma once
+
+#include "ompl_mm/base/PartialState.h"
+
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace ompl_mm
+{
+    /** What the metric needs of a configuration, computed once per tree vertex (forward
+        kinematics is the expensive part). */
+    struct MetricPoint
+    {
+        std::vector<double> joints;
+        Eigen::Vector3d tool{Eigen::Vector3d::Zero()};
+        Eigen::Quaterniond toolRotation{Eigen::Quaterniond::Identity()};
+        std::vector<Eigen::Vector3d> objects;  ///< base centres
+        std::vector<double> yaws;
+    };
+
+    class ManipulationMetric
+    {
+    public:
+        /** Weights of the metric; defaults are the paper's values for arms. */
+        struct Weights
+        {
+            double robotWeight{1.0};          ///< factor on the robot term (arms only)
+            double movingObjectPenalty{0.1};  ///< added per object that moves, metres
+            double moveToObjectPenalty{0.3};  ///< added when the tool must travel to an object, metres
+            double moveToObjectFactor{1.0};   ///< factor on that travel distance
+            double contactDistance{0.08};  ///< closer than this, no travel to the object is counted, metres
+        };
+
+        /** Most objects the metric handles (it keeps sets of objects as bits). */
+        static constexpr unsigned int MAX_OBJECTS = 64;
+
+        /** @throws ompl::Exception when the space has more than MAX_OBJECTS objects. */
+        explicit ManipulationMetric(const ManipulationStateSpace *space);
+
+        Weights &weights() { return weights_; }
+        const Weights &weights() const { return weights_; }
+
+        /** Computes the cached quantities of a fully defined state. */
+        void makePoint(const ompl::base::State *state, MetricPoint &point) const;
+
+        /** Distance from `from` to `to`, both fully defined. */
+        double distance(const MetricPoint &from, const MetricPoint &to) const;
+
+        /** A partial sample prepared for many distance evaluations against tree vertices: its
+            undefined parts take each vertex's values. */
+        struct Query
+        {
+            MetricPoint point;
+            std::vector<char> objectDefined;
+            bool robotDefined{true};
+            bool sampleIsTarget{true};  ///< the sample is `to` (forward tree) or `from` (backward tree)
+        };
+
+        /** Fills query from a partial sample. */
+        void makeQuery(const PartialState &sample, bool sampleIsTarget, Query &query) const;
+
+        /** What all vertices with the same objects share in their distance to a query: which
+            objects must move, and the penalties and displacements that costs (a lower bound). */
+        struct ObjectCost
+        {
+            std::uint64_t moving{0};  ///< bit i: object i must move
+            double bound{0.0};
+        };
+        ObjectCost objectCost(const MetricPoint &objects, const Query &query) const;
+
+        /** A lower bound of the robot term for robots whose joints lie at least jointDistance and
+            whose tool lies at least toolDistance from the query's (0 when its robot is undefined). */
+        double robotLowerBound(const Query &query, double jointDistance, double toolDistance) const;
+
+        /** A lower bound of the tool's legs (first approach and final return) for vertices with
+            these objects whose tool points lie in toolBox. */
+        double legLowerBound(const MetricPoint &objects, const Query &query, const ObjectCost &objectCost,
+                             const Eigen::AlignedBox3d &toolBox) const;
+
+        /** Distance between a tree vertex and a prepared sample; returns infinity as soon as the
+            distance is known to reach `cutoff` (exact below it), which makes linear scans fast.
+            objectCost must be objectCost(vertex, query) or that of a vertex with the same objects. */
+        double distance(const MetricPoint &vertex, const Query &query, const ObjectCost &objectCost,
+                        double cutoff = std::numeric_limits<double>::infinity()) const;
+
+    private:
+        /** Cost of the tool's approach to the first object, `distance` away. */
+        double approachCost(double distance) const;
+        double robotTerm(const MetricPoint &from, const MetricPoint &to) const;
+        /** Adds to `cost` the tool's legs from startTool to each moving object (nearest first) and
+            on to targetTool; infinity once the total reaches cutoff; cost itself when none moves. */
+        double addToolLegs(const MetricPoint &from, const MetricPoint &to, std::uint64_t moving,
+                           const Eigen::Vector3d &startTool, const Eigen::Vector3d &targetTool, double cost,
+                           double cutoff) const;
+
+        const ManipulationStateSpace *space_;
+        Weights weights_;
+        bool mobile_;
+    };
+}  // namespace ompl_mm

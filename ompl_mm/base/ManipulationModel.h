@@ -1,0 +1,61 @@
+/* What the planning pieces share about a problem: the robot's kinematics placed in the world,
+   the tool point, the movable objects and the surfaces they rest on. It answers the questions
+   every piece asks of a configuration: where is the tool, does this object rest, and on what. */
+#pragma once
+
+#include "ompl_mm/robot/RobotModel.h"
+#include "ompl_mm/scene/Scene.h"
+
+#include <memory>
+#include <vector>
+
+namespace ompl_mm
+{
+    class ManipulationModel;
+    using ManipulationModelPtr = std::shared_ptr<const ManipulationModel>;
+
+    /** Immutable after construction; shared by the state space, validity checker, metric and
+        primitives through a ManipulationModelPtr. */
+    class ManipulationModel
+    {
+    public:
+        /** Height within which an object counts as resting on a surface, metres. */
+        static constexpr double REST_TOLERANCE = 1e-4;
+
+        /** @throws InputError (naming the scene's <robot> line) when the tool link is unknown. */
+        ManipulationModel(Scene scene, RobotModel robot);
+
+        const Scene &scene() const { return scene_; }
+        const RobotModel &robot() const { return robot_; }
+        unsigned int dof() const { return robot_.dof(); }
+        unsigned int objectCount() const { return static_cast<unsigned int>(scene_.objects.size()); }
+        int toolLink() const { return toolLink_; }
+
+        /** True when every moving joint is prismatic (a mobile base): the robot's metric term is
+            then plain joint distance and pushes place the base directly, without IK. */
+        bool isMobileBase() const { return mobileBase_; }
+
+        /** World frame of the tool point for joint values q. */
+        Eigen::Isometry3d toolFrame(const double *q) const;
+
+        /** The surface an object at this pose rests on, or -1 when it rests on none (it is held). */
+        int restingSurface(const Eigen::Vector3d &position) const;
+
+        /** True when the robot can be placed by setting joints directly in x and y (two prismatic
+            joints along world x and y); then baseJointsFor() is exact. */
+        bool hasPlanarBase() const { return planarBase_; }
+
+        /** Joint values that put the tool point at world (x, y), other joints as in q.
+            @pre hasPlanarBase(). */
+        void baseJointsFor(const Eigen::Vector2d &toolXY, double *q) const;
+
+    private:
+        Scene scene_;
+        RobotModel robot_;
+        int toolLink_{-1};
+        bool mobileBase_{false};
+        bool planarBase_{false};
+        int baseJointX_{-1};
+        int baseJointY_{-1};
+    };
+}  // namespace ompl_mm

@@ -1,0 +1,197 @@
+#include "ompl_mm/base/ManipulationGoal.h"
+
+#include "ompl_mm/scene/InputError.h"
+
+#include <ompl/base/SpaceInformation.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ompl_mm
+{
+    namespace
+    {
+        double excess(double value, const GoalCoordinate &target, double tolerance)
+        {
+            return target ? std::max(0.0, std::abs(value - *target) - tolerance) : 0.0;
+        }
+
+        double angleDifference(double a, double b)
+        {
+            return std::abs(std::remainder(a - b, 2.0 * M_PI));
+        }
+    }  // namespace
+
+    ManipulationGoal::ManipulationGoal(const ompl::base::SpaceInformationPtr &si)
+        : ompl::base::GoalRegion(si), space_(si->getStateSpace()->as<ManipulationStateSpace>())
+    {
+        setThreshold(0.0);
+        const ManipulationModel &model = *space_->model();
+        const Scene &scene = model.scene();
+        robot_ = scene.robotGoal;
+        if (!robot_.joints.empty() && robot_.joints.size() != model.dof())
+            throw InputError(robot_.where, "goal has " + std::to_string(robot_.joints.size()) +
+                                               " joint values but the robot has " +
+                                               std::to_string(model.dof()) + " moving joints");
+        for (std::size_t j = 0; j < robot_.joints.size(); ++j)
+        {
+            const Joint &joint = model.robot().variableJoint(j);
+            if (robot_.joints[j] && (*robot_.joints[j] < joint.lower || *robot_.joints[j] > joint.upper))
+                throw InputError(robot_.where, "goal value " + std::to_string(*robot_.joints[j]) +
+                                                   " of joint '" + joint.name + "' is outside its limits");
+        }
+
+        objects_.assign(model.objectCount(), nullptr);
+        for (const ObjectGoal &goal : scene.objectGoals)
+        {
+            const int index = scene.objectIndex(goal.object);
+            if (index < 0)
+                throw InputError(goal.where, "goal names unknown object '" + goal.object + "'");
+            objects_[index] = &goal;
+            if (!goal.position[0] || !goal.position[1])
+                continue;
+            const double x = *goal.position[0], y = *goal.position[1];
+            const bool onSurface = std::any_of(
+                scene.surfaces.begin(), scene.surfaces.end(),
+                [&](const auto &s)
+                {
+                    return s.contains(x, y) && (!goal.position[2] || std::abs(*goal.position[2] - s.height) <
+                                                                         ManipulationModel::REST_TOLERANCE);
+                });
+            if (!onSurface)
+                throw InputError(goal.where, "goal of object '" + goal.object +
+                                                 "' lies on no support surface, so it can never rest there");
+        }
+    }
+
+    bool ManipulationGoal::constrainsObject(unsigned int object) const
+    {
+        const ObjectGoal *goal = objects_[object];
+        return goal && (goal->position[0] || goal->position[1] || goal->position[2] || goal->yaw);
+    }
+
+    bool ManipulationGoal::constrainsRobot() const
+    {
+        return std::any_of(robot_.joints.begin(), robot_.joints.end(),
+                           [](const auto &j) { return j.has_value(); });
+    }
+
+    double ManipulationGoal::distanceGoal(const ompl::base::State *state) const
+    {
+        double distance = 0.0;
+        const double *q = space_->robotValues(state);
+        for (std::size_t j = 0; j < robot_.joints.size(); ++j)
+            distance = std::max(distance, excess(q[j], robot_.joints[j], robot_.tolerance));
+        double unsupported = 0.0;
+        for (unsigned int i = 0; i < space_->objectCount(); ++i)
+        {
+            const ObjectPose pose = space_->objectPose(state, i);
+            if (space_->model()->restingSurface(pose.position) < 0)
+                unsupported += 1.0;
+            const ObjectGoal *goal = objects_[i];
+            if (!goal)
+                continue;
+            for (int k = 0; k < 3; ++k)
+                distance =
+                    std::max(distance, excess(pose.position[k], goal->position[k], goal->positionTolerance));
+            if (goal->yaw)
+                distance = std::max(
+                    distance, std::max(0.0, angleDifference(pose.yaw, *goal->yaw) - goal->yawTolerance));
+        }
+        return distance + unsupported;
+    }
+
+    bool ManipulationGoal::isSatisfied(const ompl::base::State *state) const
+    {
+        return distanceGoal(state) <= 0.0;
+    }
+
+    bool ManipulationGoal::isSatisfied(const ompl::base::State *state, double *distance) const
+    {
+        const double d = distanceGoal(state);
+        if (distance)
+            *distance = d;
+        return d <= 0.0;
+    }
+
+    void ManipulationGoal::completeObject(unsigned int object, const ObjectPose *fromSample, ObjectPose &pose,
+                                          ompl::RNG &rng) const
+    {
+        const Scene &scene = space_->model()->scene();
+        const ObjectGoal *goal = objects_[object];
+        std::vector<const SupportSurface *> candidates;
+        for (const SupportSurface &s : scene.surfaces)
+        {
+            const bool xFits = !goal || !goal->position[0] ||
+                               (*goal->position[0] >= s.min.x() && *goal->position[0] <= s.max.x());
+            const bool yFits = !goal || !goal->position[1] ||
+                               (*goal->position[1] >= s.min.y() && *goal->position[1] <= s.max.y());
+            const bool zFits = !goal || !goal->position[2] ||
+                               std::abs(*goal->position[2] - s.height) < ManipulationModel::REST_TOLERANCE;
+            if (xFits && yFits && zFits)
+                candidates.push_back(&s);
+        }
+        if (fromSample && space_->model()->restingSurface(fromSample->position) >= 0)
+        {
+            pose = *fromSample;
+        }
+        else
+        {
+            // no sample value: a uniform place on a surface the goal allows
+            const SupportSurface &s = *candidates[rng.uniformInt(0, static_cast<int>(candidates.size()) - 1)];
+            pose.position = {rng.uniformReal(s.min.x(), s.max.x()), rng.uniformReal(s.min.y(), s.max.y()),
+                             s.height};
+            pose.yaw = scene.objects[object].start.yaw;
+        }
+        if (goal)
+        {
+            for (int k = 0; k < 3; ++k)
+                if (goal->position[k])
+                    pose.position[k] = *goal->position[k];
+            if (goal->yaw)
+                pose.yaw = *goal->yaw;
+        }
+        // the goal's x, y may move the object off the sampled surface: rest it on one that fits
+        if (space_->model()->restingSurface(pose.position) < 0)
+            for (const SupportSurface *s : candidates)
+                if (s->contains(pose.position.x(), pose.position.y()))
+                {
+                    pose.position.z() = s->height;
+                    break;
+                }
+    }
+
+    void ManipulationGoal::complete(const PartialState &sample, ompl::base::State *out, ompl::RNG &rng) const
+    {
+        double *q = space_->robotValues(out);
+        const double *sampleQ = space_->robotValues(sample.state());
+        const RobotModel &robot = space_->model()->robot();
+        for (unsigned int j = 0; j < robot.dof(); ++j)
+        {
+            if (j < robot_.joints.size() && robot_.joints[j])
+                q[j] = *robot_.joints[j];
+            else if (sample.robotDefined())
+                q[j] = sampleQ[j];
+            else
+                q[j] = rng.uniformReal(robot.variableJoint(j).lower, robot.variableJoint(j).upper);
+        }
+        for (unsigned int i = 0; i < space_->objectCount(); ++i)
+        {
+            ObjectPose pose;
+            ObjectPose samplePose;
+            if (sample.objectDefined(i))
+                samplePose = space_->objectPose(sample.state(), i);
+            completeObject(i, sample.objectDefined(i) ? &samplePose : nullptr, pose, rng);
+            space_->setObjectPose(out, i, pose);
+        }
+    }
+
+    void ManipulationGoal::print(std::ostream &out) const
+    {
+        out << "Manipulation goal: " << (constrainsRobot() ? "robot joints, " : "");
+        for (unsigned int i = 0; i < space_->objectCount(); ++i)
+            if (constrainsObject(i))
+                out << "object '" << space_->model()->scene().objects[i].name << "', ";
+        out << "all objects resting" << std::endl;
+    }
+}  // namespace ompl_mm

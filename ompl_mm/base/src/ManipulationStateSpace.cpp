@@ -1,0 +1,215 @@
+#include "ompl_mm/base/ManipulationStateSpace.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ob = ompl::base;
+
+namespace ompl_mm
+{
+    namespace
+    {
+        constexpr double SAME = 1e-9;
+
+        unsigned int positionIndex(unsigned int object)
+        {
+            return 1 + 2 * object;
+        }
+        unsigned int yawIndex(unsigned int object)
+        {
+            return 2 + 2 * object;
+        }
+
+        /** Bounds that enclose every place an object may be: surfaces and sampling regions. */
+        ob::RealVectorBounds objectBounds(const Scene &scene)
+        {
+            Eigen::AlignedBox3d box;
+            for (const SupportSurface &s : scene.surfaces)
+            {
+                box.extend(Eigen::Vector3d(s.min.x(), s.min.y(), s.height));
+                box.extend(Eigen::Vector3d(s.max.x(), s.max.y(), s.height));
+            }
+            for (const SamplingRegion &r : scene.samplingRegions)
+                box.extend(r.box);
+            for (const MovableObject &o : scene.objects)
+                box.extend(o.start.position);
+            // a margin keeps bounds non-degenerate when all surfaces share one height
+            const double margin = 0.01;
+            ob::RealVectorBounds bounds(3);
+            for (unsigned int i = 0; i < 3; ++i)
+            {
+                bounds.setLow(i, box.min()[i] - margin);
+                bounds.setHigh(i, box.max()[i] + margin);
+            }
+            return bounds;
+        }
+    }  // namespace
+
+    ManipulationStateSpace::ManipulationStateSpace(ManipulationModelPtr model) : model_(std::move(model))
+    {
+        setName("Manipulation" + getName());
+        const RobotModel &robot = model_->robot();
+        auto robotSpace = std::make_shared<ob::RealVectorStateSpace>(robot.dof());
+        ob::RealVectorBounds jointBounds(robot.dof());
+        for (unsigned int i = 0; i < robot.dof(); ++i)
+        {
+            jointBounds.setLow(i, robot.variableJoint(i).lower);
+            jointBounds.setHigh(i, robot.variableJoint(i).upper);
+            robotSpace->setDimensionName(i, robot.variableJoint(i).name);
+        }
+        robotSpace->setBounds(jointBounds);
+        robotSpace->setName("robot");
+        addSubspace(robotSpace, 1.0);
+
+        const ob::RealVectorBounds bounds = objectBounds(model_->scene());
+        for (const MovableObject &object : model_->scene().objects)
+        {
+            auto position = std::make_shared<ob::RealVectorStateSpace>(3);
+            position->setBounds(bounds);
+            position->setName(object.name + "_position");
+            addSubspace(position, 1.0);
+            auto yaw = std::make_shared<ob::SO2StateSpace>();
+            yaw->setName(object.name + "_yaw");
+            addSubspace(yaw, 1.0);
+        }
+        lock();
+    }
+
+    double *ManipulationStateSpace::robotValues(ob::State *state) const
+    {
+        return state->as<StateType>()->as<ob::RealVectorStateSpace::StateType>(0)->values;
+    }
+
+    const double *ManipulationStateSpace::robotValues(const ob::State *state) const
+    {
+        return state->as<StateType>()->as<ob::RealVectorStateSpace::StateType>(0)->values;
+    }
+
+    Eigen::Vector3d ManipulationStateSpace::objectPosition(const ob::State *state, unsigned int object) const
+    {
+        const double *p =
+            state->as<StateType>()->as<ob::RealVectorStateSpace::StateType>(positionIndex(object))->values;
+        return {p[0], p[1], p[2]};
+    }
+
+    double ManipulationStateSpace::objectYaw(const ob::State *state, unsigned int object) const
+    {
+        return state->as<StateType>()->as<ob::SO2StateSpace::StateType>(yawIndex(object))->value;
+    }
+
+    ObjectPose ManipulationStateSpace::objectPose(const ob::State *state, unsigned int object) const
+    {
+        return {objectPosition(state, object), objectYaw(state, object)};
+    }
+
+    void ManipulationStateSpace::setObjectPose(ob::State *state, unsigned int object,
+                                               const ObjectPose &pose) const
+    {
+        double *p =
+            state->as<StateType>()->as<ob::RealVectorStateSpace::StateType>(positionIndex(object))->values;
+        p[0] = pose.position.x();
+        p[1] = pose.position.y();
+        p[2] = pose.position.z();
+        auto *yaw = state->as<StateType>()->as<ob::SO2StateSpace::StateType>(yawIndex(object));
+        yaw->value = pose.yaw;
+        getSubspace(yawIndex(object))->enforceBounds(yaw);
+    }
+
+    void ManipulationStateSpace::copyObject(ob::State *destination, const ob::State *source,
+                                            unsigned int object) const
+    {
+        for (unsigned int index : {positionIndex(object), yawIndex(object)})
+            getSubspace(index)->copyState(destination->as<StateType>()->components[index],
+                                          source->as<StateType>()->components[index]);
+    }
+
+    void ManipulationStateSpace::copyRobot(ob::State *destination, const ob::State *source) const
+    {
+        std::copy_n(robotValues(source), robotDimension(), robotValues(destination));
+    }
+
+    bool ManipulationStateSpace::objectMoves(const ob::State *a, const ob::State *b,
+                                             unsigned int object) const
+    {
+        return (objectPosition(a, object) - objectPosition(b, object)).cwiseAbs().maxCoeff() > SAME ||
+               std::abs(objectYaw(a, object) - objectYaw(b, object)) > SAME;
+    }
+
+    bool ManipulationStateSpace::robotMoves(const ob::State *a, const ob::State *b) const
+    {
+        const double *qa = robotValues(a);
+        const double *qb = robotValues(b);
+        for (unsigned int i = 0; i < robotDimension(); ++i)
+            if (std::abs(qa[i] - qb[i]) > SAME)
+                return true;
+        return false;
+    }
+
+    int ManipulationStateSpace::restingSurface(const ob::State *state, unsigned int object) const
+    {
+        return model_->restingSurface(objectPosition(state, object));
+    }
+
+    Eigen::Vector3d ManipulationStateSpace::toolPosition(const ob::State *state) const
+    {
+        return model_->toolFrame(robotValues(state)).translation();
+    }
+
+    void ManipulationStateSpace::setCollisionResolution(double step)
+    {
+        for (unsigned int i = 0; i < getSubspaceCount(); ++i)
+        {
+            const ob::StateSpacePtr &space = getSubspace(i);
+            space->setLongestValidSegmentFraction(std::min(1.0, step / space->getMaximumExtent()));
+        }
+    }
+
+    ObjectPose ManipulationStateSpace::carriedPose(const ob::State *anchor, const ob::State *robotAt,
+                                                   unsigned int object) const
+    {
+        const ObjectPose pose = objectPose(anchor, object);
+        Eigen::Isometry3d objectFrame = Eigen::Isometry3d::Identity();
+        objectFrame.translate(pose.position).rotate(Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()));
+        const Eigen::Isometry3d grasp = model_->toolFrame(robotValues(anchor)).inverse() * objectFrame;
+        const Eigen::Isometry3d carried = model_->toolFrame(robotValues(robotAt)) * grasp;
+        // the object stays upright: keep only the rotation about the vertical
+        const Eigen::Vector3d xAxis = carried.linear().col(0);
+        return {carried.translation(), std::atan2(xAxis.y(), xAxis.x())};
+    }
+
+    void ManipulationStateSpace::interpolate(const ob::State *from, const ob::State *to, double t,
+                                             ob::State *state) const
+    {
+        getSubspace(0)->interpolate(from->as<StateType>()->components[0], to->as<StateType>()->components[0],
+                                    t, state->as<StateType>()->components[0]);
+        for (unsigned int i = 0; i < objectCount(); ++i)
+        {
+            const bool heldAtFrom = restingSurface(from, i) < 0;
+            const bool heldAtTo = restingSurface(to, i) < 0;
+            if (objectMoves(from, to, i) && (heldAtFrom || heldAtTo))
+            {
+                setObjectPose(state, i, carriedPose(heldAtFrom ? from : to, state, i));
+                continue;
+            }
+            for (unsigned int index : {positionIndex(i), yawIndex(i)})
+                getSubspace(index)->interpolate(from->as<StateType>()->components[index],
+                                                to->as<StateType>()->components[index], t,
+                                                state->as<StateType>()->components[index]);
+        }
+    }
+
+    void ManipulationStateSpace::printState(const ob::State *state, std::ostream &out) const
+    {
+        out << "robot [";
+        for (unsigned int i = 0; i < robotDimension(); ++i)
+            out << (i ? " " : "") << robotValues(state)[i];
+        out << "]";
+        for (unsigned int i = 0; i < objectCount(); ++i)
+        {
+            const ObjectPose pose = objectPose(state, i);
+            out << " " << model_->scene().objects[i].name << " (" << pose.position.x() << " "
+                << pose.position.y() << " " << pose.position.z() << " yaw " << pose.yaw << ")";
+        }
+        out << std::endl;
+    }
+}  // namespace ompl_mm

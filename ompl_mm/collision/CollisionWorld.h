@@ -1,0 +1,67 @@
+/* Collision checking of one manipulation configuration with FCL: robot links, movable objects
+   and the fixed obstacles (in a broad-phase tree). It applies the contact rules of the state-based
+   validity: a held object may touch the gripper (the tool link and the links below it), a resting
+   object may touch the obstacle its surface belongs to, listed robot link pairs are ignored, and
+   adjacent links never collide with each other. */
+#pragma once
+
+#include "ompl_mm/base/ManipulationModel.h"
+
+#include <fcl/fcl.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ompl_mm
+{
+    /** Makes the FCL geometry of a shape (cylinders along z, centred). */
+    std::shared_ptr<fcl::CollisionGeometryd> makeCollisionGeometry(const Shape &shape);
+
+    /** Not thread-safe: queries move the bodies. Not copyable (FCL objects hold raw pointers). */
+    class CollisionWorld
+    {
+    public:
+        /** A configuration to check: joint values, and per object its pose and resting surface
+            (-1 = held by the robot). */
+        struct Configuration
+        {
+            const double *joints{nullptr};
+            const std::vector<ObjectPose> *objects{nullptr};
+            const std::vector<int> *restingSurfaces{nullptr};
+        };
+
+        explicit CollisionWorld(ManipulationModelPtr model);
+        ~CollisionWorld();
+        CollisionWorld(const CollisionWorld &) = delete;
+        CollisionWorld &operator=(const CollisionWorld &) = delete;
+
+        /** True when nothing collides. When it returns false and contact is given, contact names
+            the first colliding pair ("robot link 'a'", "object 'b'", "obstacle 'c'"). */
+        bool isCollisionFree(const Configuration &configuration, std::string *contact = nullptr) const;
+
+    private:
+        struct Body
+        {
+            std::unique_ptr<fcl::CollisionObjectd> object;
+            Eigen::Isometry3d offset;  ///< shape centre in the body (link or object) frame
+            int owner;                 ///< link index or object index
+            std::string label;
+            bool gripper{false};  ///< robot link at or below the tool link: may touch a held object
+        };
+
+        void placeBodies(const Configuration &configuration) const;
+        bool hitsObstacle(const Body &body, int allowedObstacle, std::string *contact) const;
+        bool robotFree(const Configuration &configuration, std::string *contact) const;
+        bool objectsFree(const Configuration &configuration, std::string *contact) const;
+
+        ManipulationModelPtr model_;
+        std::vector<Body> robotBodies_;
+        std::vector<Body> objectBodies_;
+        std::vector<Body> obstacleBodies_;
+        std::vector<std::pair<std::size_t, std::size_t>> selfPairs_;  ///< robot body pairs to check
+        std::vector<int> surfaceObstacle_;  ///< per surface, the obstacle it belongs to, or -1
+        std::unique_ptr<fcl::BroadPhaseCollisionManagerd> obstacleTree_;
+        mutable std::vector<Eigen::Isometry3d> linkFrames_;
+    };
+}  // namespace ompl_mm

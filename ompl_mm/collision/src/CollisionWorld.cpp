@@ -1,0 +1,212 @@
+#include "ompl_mm/collision/CollisionWorld.h"
+
+#include "ompl_mm/scene/InputError.h"
+
+#include <algorithm>
+
+namespace ompl_mm
+{
+    namespace
+    {
+        /** What the broad-phase callback needs: the obstacle a body may touch, and the result. */
+        struct ObstacleQuery
+        {
+            const fcl::CollisionObjectd *allowed{nullptr};
+            const fcl::CollisionObjectd *hit{nullptr};
+        };
+
+        bool narrowPhase(const fcl::CollisionObjectd &a, const fcl::CollisionObjectd &b)
+        {
+            if (!a.getAABB().overlap(b.getAABB()))
+                return false;
+            fcl::CollisionRequestd request;
+            fcl::CollisionResultd result;
+            return fcl::collide(&a, &b, request, result) > 0;
+        }
+
+        bool obstacleCallback(fcl::CollisionObjectd *o1, fcl::CollisionObjectd *o2, void *data)
+        {
+            auto *query = static_cast<ObstacleQuery *>(data);
+            // the manager passes the query body and a tree body in either order
+            const fcl::CollisionObjectd *obstacle = o1->getUserData() ? o1 : o2;
+            if (obstacle == query->allowed)
+                return false;
+            if (narrowPhase(*o1, *o2))
+            {
+                query->hit = obstacle;
+                return true;
+            }
+            return false;
+        }
+
+        void place(fcl::CollisionObjectd &object, const Eigen::Isometry3d &frame)
+        {
+            object.setTransform(frame.linear(), frame.translation());
+            object.computeAABB();
+        }
+
+        Eigen::Isometry3d objectFrame(const ObjectPose &pose)
+        {
+            Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
+            frame.translate(pose.position).rotate(Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()));
+            return frame;
+        }
+    }  // namespace
+
+    std::shared_ptr<fcl::CollisionGeometryd> makeCollisionGeometry(const Shape &shape)
+    {
+        switch (shape.kind)
+        {
+            case Shape::Kind::Box:
+                return std::make_shared<fcl::Boxd>(shape.boxSize.x(), shape.boxSize.y(), shape.boxSize.z());
+            case Shape::Kind::Cylinder:
+                return std::make_shared<fcl::Cylinderd>(shape.radius, shape.length);
+            case Shape::Kind::Sphere:
+                return std::make_shared<fcl::Sphered>(shape.radius);
+        }
+        throw ompl::Exception("unknown shape kind");
+    }
+
+    CollisionWorld::CollisionWorld(ManipulationModelPtr model) : model_(std::move(model))
+    {
+        const Scene &scene = model_->scene();
+        const RobotModel &robot = model_->robot();
+        for (std::size_t l = 0; l < robot.links().size(); ++l)
+            for (const LinkShape &s : robot.links()[l].shapes)
+                robotBodies_.push_back(
+                    {std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(s.shape)), s.origin,
+                     static_cast<int>(l), "robot link '" + robot.links()[l].name + "'",
+                     robot.isInSubtree(static_cast<int>(l), model_->toolLink())});
+
+        for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        {
+            const Shape &shape = scene.objects[i].shape;
+            Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
+            offset.translation().z() = 0.5 * shape.height();  // the object frame is at its base
+            objectBodies_.push_back({std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(shape)),
+                                     offset, static_cast<int>(i), "object '" + scene.objects[i].name + "'"});
+        }
+
+        obstacleTree_ = std::make_unique<fcl::DynamicAABBTreeCollisionManagerd>();
+        for (std::size_t i = 0; i < scene.obstacles.size(); ++i)
+        {
+            Body body{
+                std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(scene.obstacles[i].shape)),
+                Eigen::Isometry3d::Identity(), static_cast<int>(i),
+                "obstacle '" + scene.obstacles[i].name + "'"};
+            place(*body.object, scene.obstacles[i].pose);
+            body.object->setUserData(&obstacleBodies_);  // non-null marks tree members
+            obstacleTree_->registerObject(body.object.get());
+            obstacleBodies_.push_back(std::move(body));
+        }
+        obstacleTree_->setup();
+
+        for (const SupportSurface &s : scene.surfaces)
+        {
+            int index = -1;
+            for (std::size_t i = 0; i < scene.obstacles.size(); ++i)
+                if (scene.obstacles[i].name == s.obstacle)
+                    index = static_cast<int>(i);
+            if (!s.obstacle.empty() && index < 0)
+                throw InputError(s.where,
+                                 "surface '" + s.name + "' names unknown obstacle '" + s.obstacle + "'");
+            surfaceObstacle_.push_back(index);
+        }
+
+        // self-collision: links that are neither adjacent nor listed as allowed
+        std::vector<std::pair<int, int>> allowed;
+        for (const auto &pair : scene.robot.allowedCollisions)
+            allowed.emplace_back(robot.linkIndex(pair.first), robot.linkIndex(pair.second));
+        for (std::size_t a = 0; a < robotBodies_.size(); ++a)
+            for (std::size_t b = a + 1; b < robotBodies_.size(); ++b)
+            {
+                const int la = robotBodies_[a].owner, lb = robotBodies_[b].owner;
+                const bool adjacent =
+                    la == lb || robot.links()[la].parent == lb || robot.links()[lb].parent == la;
+                const bool listed =
+                    std::find(allowed.begin(), allowed.end(), std::make_pair(la, lb)) != allowed.end() ||
+                    std::find(allowed.begin(), allowed.end(), std::make_pair(lb, la)) != allowed.end();
+                if (!adjacent && !listed)
+                    selfPairs_.emplace_back(a, b);
+            }
+        linkFrames_.resize(robot.links().size());
+    }
+
+    CollisionWorld::~CollisionWorld() = default;
+
+    void CollisionWorld::placeBodies(const Configuration &configuration) const
+    {
+        model_->robot().forwardKinematics(configuration.joints, model_->scene().robot.basePose, linkFrames_);
+        for (const Body &body : robotBodies_)
+            place(*body.object, linkFrames_[body.owner] * body.offset);
+        for (const Body &body : objectBodies_)
+            place(*body.object, objectFrame((*configuration.objects)[body.owner]) * body.offset);
+    }
+
+    bool CollisionWorld::hitsObstacle(const Body &body, int allowedObstacle, std::string *contact) const
+    {
+        ObstacleQuery query;
+        if (allowedObstacle >= 0)
+            query.allowed = obstacleBodies_[allowedObstacle].object.get();
+        obstacleTree_->collide(body.object.get(), &query, obstacleCallback);
+        if (query.hit == nullptr)
+            return false;
+        if (contact)
+            for (const Body &obstacle : obstacleBodies_)
+                if (obstacle.object.get() == query.hit)
+                    *contact = body.label + " and " + obstacle.label;
+        return true;
+    }
+
+    bool CollisionWorld::robotFree(const Configuration &configuration, std::string *contact) const
+    {
+        for (const Body &link : robotBodies_)
+        {
+            if (hitsObstacle(link, -1, contact))
+                return false;
+            for (const Body &object : objectBodies_)
+            {
+                if (link.gripper && (*configuration.restingSurfaces)[object.owner] < 0)
+                    continue;
+                if (narrowPhase(*link.object, *object.object))
+                {
+                    if (contact)
+                        *contact = link.label + " and " + object.label;
+                    return false;
+                }
+            }
+        }
+        for (const auto &[a, b] : selfPairs_)
+            if (narrowPhase(*robotBodies_[a].object, *robotBodies_[b].object))
+            {
+                if (contact)
+                    *contact = robotBodies_[a].label + " and " + robotBodies_[b].label;
+                return false;
+            }
+        return true;
+    }
+
+    bool CollisionWorld::objectsFree(const Configuration &configuration, std::string *contact) const
+    {
+        for (std::size_t i = 0; i < objectBodies_.size(); ++i)
+        {
+            const int surface = (*configuration.restingSurfaces)[i];
+            if (hitsObstacle(objectBodies_[i], surface >= 0 ? surfaceObstacle_[surface] : -1, contact))
+                return false;
+            for (std::size_t j = i + 1; j < objectBodies_.size(); ++j)
+                if (narrowPhase(*objectBodies_[i].object, *objectBodies_[j].object))
+                {
+                    if (contact)
+                        *contact = objectBodies_[i].label + " and " + objectBodies_[j].label;
+                    return false;
+                }
+        }
+        return true;
+    }
+
+    bool CollisionWorld::isCollisionFree(const Configuration &configuration, std::string *contact) const
+    {
+        placeBodies(configuration);
+        return objectsFree(configuration, contact) && robotFree(configuration, contact);
+    }
+}  // namespace ompl_mm

@@ -1,0 +1,56 @@
+/* A manipulation plan as an OMPL geometric path: the waypoints, plus one label per segment
+   saying which primitive moved which object. Consecutive waypoints interpolate with the
+   manipulation state space, so PathGeometric::check() and OMPL's benchmark re-check it as is.
+   Operations inherited from PathGeometric that insert or remove states (interpolate, subdivide,
+   reverse, append, keepAfter/Before, random perturbations) do not update the labels; use the
+   label-aware members here instead. */
+#pragma once
+
+#include "ompl_mm/primitives/Trajectory.h"
+
+#include <ompl/geometric/PathGeometric.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ompl_mm
+{
+    class ManipulationPath : public ompl::geometric::PathGeometric
+    {
+    public:
+        explicit ManipulationPath(const ompl::base::SpaceInformationPtr &si);
+
+        /** Appends a state reached from the last one by a labelled segment (no label for the first). */
+        void appendLabelled(const ompl::base::State *state, SegmentLabel label);
+        /** Appends the first state. @pre the path is empty. */
+        void appendFirst(const ompl::base::State *state);
+
+        /** Label of the segment from state i to state i + 1. */
+        const SegmentLabel &label(std::size_t i) const { return labels_[i]; }
+        const std::vector<SegmentLabel> &labels() const { return labels_; }
+
+        /** Removes states first + 1 … last − 1; the segment first → last takes first's label.
+            @pre every removed segment has the same label as the segment leaving first. */
+        void shortcut(std::size_t first, std::size_t last);
+
+        /** Removes states equal to their predecessor. */
+        void removeRepeatedStates();
+
+        /** Length of the path the tool point travels, metres (straight lines between waypoints
+            sampled at the space's collision resolution). */
+        double toolPathLength() const;
+
+        /** Number of primitive applications by kind (a run of segments with the same label
+            counts once; a run of transit segments counts as one transit). */
+        std::map<std::string, unsigned int> primitiveCounts() const;
+
+        /** Checks that every segment is one its label allows: transit moves no object, a push or
+            transfer moves only its object, and that objects move only in such segments. Returns an
+            empty string when consistent, else a description of the first fault. */
+        std::string checkLabels() const;
+
+    private:
+        std::vector<SegmentLabel> labels_;
+    };
+}  // namespace ompl_mm

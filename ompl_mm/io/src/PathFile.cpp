@@ -1,0 +1,42 @@
+#include "ompl_mm/io/PathFile.h"
+
+#include <ompl/base/SpaceInformation.h>
+
+#include <iomanip>
+
+namespace ompl_mm
+{
+    void writePathFile(std::ostream &out, const ManipulationPath &path)
+    {
+        const auto *space = path.getSpaceInformation()->getStateSpace()->as<ManipulationStateSpace>();
+        const ManipulationModel &model = *space->model();
+        out << "# segment object";
+        for (unsigned int j = 0; j < model.dof(); ++j)
+            out << ' ' << model.robot().variableJoint(j).name;
+        for (const MovableObject &object : model.scene().objects)
+            out << ' ' << object.name << ".x " << object.name << ".y " << object.name << ".z " << object.name
+                << ".yaw";
+        out << '\n' << std::setprecision(10);
+        for (std::size_t i = 0; i < path.getStateCount(); ++i)
+        {
+            const ompl::base::State *state = path.getState(i);
+            if (i == 0)
+                out << "start -";
+            else
+            {
+                const SegmentLabel &label = path.label(i - 1);
+                out << primitiveKindName(label.kind) << ' '
+                    << (label.object >= 0 ? model.scene().objects[label.object].name : std::string("-"));
+            }
+            for (unsigned int j = 0; j < model.dof(); ++j)
+                out << ' ' << space->robotValues(state)[j];
+            for (unsigned int o = 0; o < model.objectCount(); ++o)
+            {
+                const ObjectPose pose = space->objectPose(state, o);
+                out << ' ' << pose.position.x() << ' ' << pose.position.y() << ' ' << pose.position.z() << ' '
+                    << pose.yaw;
+            }
+            out << '\n';
+        }
+    }
+}  // namespace ompl_mm

@@ -1,0 +1,77 @@
+#include "ompl_mm/io/ResultJson.h"
+
+#include <iomanip>
+#include <sstream>
+
+namespace ompl_mm
+{
+    namespace
+    {
+        std::string quoted(const std::string &text)
+        {
+            std::ostringstream out;
+            out << '"';
+            for (const char c : text)
+            {
+                if (c == '"' || c == '\\')
+                    out << '\\' << c;
+                else if (static_cast<unsigned char>(c) < 0x20)
+                    out << "\\u" << std::hex << std::setw(4) << std::setfill('0') << static_cast<int>(c)
+                        << std::dec;
+                else
+                    out << c;
+            }
+            out << '"';
+            return out.str();
+        }
+
+        void writeStats(std::ostream &out, const MOPLStatistics &s)
+        {
+            out << "  \"stats\": {\n"
+                << "    \"time_sampling_s\": " << s.samplingTime << ",\n"
+                << "    \"time_nearest_s\": " << s.nearestTime << ",\n"
+                << "    \"time_propagate_s\": " << s.propagateTime << ",\n"
+                << "    \"time_connect_s\": " << s.connectTime << ",\n"
+                << "    \"time_smoothing_s\": " << s.smoothingTime << ",\n"
+                << "    \"time_ik_s\": 0,\n"
+                << "    \"iterations\": " << s.iterations << ",\n"
+                << "    \"collision_queries\": " << s.collisionQueries << ",\n"
+                << "    \"collision_queries_free\": " << s.freeCollisionQueries << "\n"
+                << "  }";
+        }
+    }  // namespace
+
+    void writeResultJson(std::ostream &out, const RunDescription &run, const ManipulationSetup &setup)
+    {
+        const bool solved = setup.getProblemDefinition()->hasExactSolution();
+        const MOPL &planner = *setup.mopl();
+        ompl::base::PlannerData data(setup.getSpaceInformation());
+        planner.getPlannerData(data);
+        out << std::setprecision(10) << "{\n"
+            << "  \"scene\": " << quoted(run.scene) << ",\n"
+            << "  \"planner\": " << quoted(run.planner) << ",\n"
+            << "  \"seed\": " << run.seed << ",\n"
+            << "  \"time_limit_s\": " << run.timeLimit << ",\n"
+            << "  \"solved\": " << (solved ? "true" : "false") << ",\n"
+            << "  \"status\": " << quoted(setup.getLastPlannerStatus().asString()) << ",\n"
+            << "  \"time_s\": " << setup.getLastPlanComputationTime() << ",\n"
+            << "  \"tree_vertices\": " << data.numVertices() << ",\n"
+            << "  \"tree_edges\": " << data.numEdges() << ",\n";
+        writeStats(out, planner.statistics());
+        if (solved)
+        {
+            const ManipulationPath &path = setup.manipulationPath();
+            out << ",\n  \"path_length_m\": " << path.toolPathLength() << ",\n"
+                << "  \"path_vertices\": " << path.getStateCount() << ",\n"
+                << "  \"primitives\": {";
+            bool first = true;
+            for (const auto &[kind, count] : path.primitiveCounts())
+            {
+                out << (first ? "" : ", ") << quoted(kind) << ": " << count;
+                first = false;
+            }
+            out << "}";
+        }
+        out << "\n}\n";
+    }
+}  // namespace ompl_mm

@@ -1,0 +1,599 @@
+#include "ompl_mm/io/SceneSvg.h"
+
+#include <ompl/base/ScopedState.h>
+#include <ompl/util/Exception.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <locale>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace ompl_mm
+{
+    namespace
+    {
+        // the picture is laid out in pixels: world metres are mapped into a band between a title strip
+        // and a legend strip, so line widths and fonts look the same for any scene size
+        constexpr double WIDTH_PX = 800.0;
+        constexpr double TITLE_PX = 32.0;
+        constexpr double LEGEND_PX = 36.0;
+        constexpr double MARGIN_FRACTION = 0.05;
+        constexpr unsigned int SUB_STEPS = 20;
+        constexpr double HEIGHT_QUANTUM = 1e-6;
+
+        const char *const OBSTACLE_COLOUR = "#555555";
+        const char *const SURFACE_COLOUR = "#e2e2e2";
+        const char *const ARROW_COLOUR = "#8b0000";
+        const char *const ROBOT_COLOUR = "#333333";
+        const std::string ARROW_STYLE = std::string("stroke=\"") + ARROW_COLOUR +
+                                        R"svg(" stroke-width="2" marker-end="url(#arrowhead)")svg";
+        // object colours avoid the four primitive colours so objects and tool path stay apart
+        const std::vector<const char *> OBJECT_PALETTE = {"#9467bd", "#8c564b", "#e377c2", "#bcbd22",
+                                                          "#17becf", "#393b79", "#637939", "#8c6d31",
+                                                          "#843c39", "#7b4173"};
+
+        /** An upright outline seen from above: a polygon, or a circle when radius > 0. */
+        struct Footprint
+        {
+            std::vector<Eigen::Vector2d> corners;
+            Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
+            double radius{0.0};
+        };
+
+        /** An obstacle or a support surface, drawn lowest top first (painter's order). */
+        struct GroundItem
+        {
+            long long topKey;  // top height in HEIGHT_QUANTUM units, so equal heights compare equal
+            bool isSurface;    // at equal height the surface (an obstacle's top) is drawn above it
+            bool faint;        // an obstacle at or under the lowest surface (a floor slab)
+            Footprint footprint;
+            std::string name;
+        };
+
+        /** A goal marker with its label. */
+        struct GoalMarker
+        {
+            Eigen::Vector2d at;
+            std::string label;
+            std::string colour;
+        };
+
+        /** The tool point's course along one labelled segment. */
+        struct ToolSegment
+        {
+            PrimitiveKind kind;
+            std::vector<Eigen::Vector2d> points;
+        };
+
+        /** Everything to draw, in world metres. */
+        struct Picture
+        {
+            std::vector<GroundItem> ground;
+            std::vector<Footprint> objectStart;
+            std::vector<Footprint> objectEnd;  // empty without a path
+            std::vector<GoalMarker> goals;
+            std::vector<ToolSegment> segments;
+            std::vector<Eigen::Vector2d> waypoints;
+            std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> pushArrows;
+            std::optional<Footprint> robotStart;
+            std::optional<Footprint> robotEnd;
+        };
+
+        /** Maps world x, y (y up) to picture pixels (y down). */
+        struct Frame
+        {
+            Eigen::Vector2d min;  // world point at the left edge and the bottom of the drawing band
+            double top;           // world y at the top of the drawing band
+            double scale;         // pixels per metre
+            double height;        // of the whole picture, pixels
+
+            Eigen::Vector2d map(const Eigen::Vector2d &p) const
+            {
+                return {(p.x() - min.x()) * scale, TITLE_PX + (top - p.y()) * scale};
+            }
+        };
+
+        /** Fits the box, with a margin, to the picture's width. */
+        Frame fitFrame(const Eigen::AlignedBox2d &box)
+        {
+            // at least a metre across, so a lone object is not blown up to the whole picture
+            const Eigen::Vector2d half = (box.sizes() / 2.0).cwiseMax(0.5);
+            const Eigen::Vector2d margin = Eigen::Vector2d::Constant(MARGIN_FRACTION * 2.0 * half.maxCoeff());
+            const Eigen::Vector2d min = box.center() - half - margin;
+            const Eigen::Vector2d max = box.center() + half + margin;
+            const double scale = WIDTH_PX / (max.x() - min.x());
+            return {min, max.y(), scale, TITLE_PX + (max.y() - min.y()) * scale + LEGEND_PX};
+        }
+
+        /** Fixed two-decimal pixels: exact enough and byte-for-byte reproducible. */
+        std::string num(double value)
+        {
+            std::ostringstream s;
+            s.imbue(std::locale::classic());
+            s.setf(std::ios::fixed);
+            s.precision(2);
+            s << value;
+            const std::string text = s.str();
+            return text == "-0.00" ? "0.00" : text;
+        }
+
+        const std::pair<char, const char *> ENTITIES[] = {
+            {'&', "&amp;"}, {'<', "&lt;"}, {'>', "&gt;"}, {'"', "&quot;"}, {'\'', "&apos;"}};
+
+        std::string escape(const std::string &text)
+        {
+            std::string out;
+            for (char c : text)
+            {
+                const auto *entity = std::find_if(std::begin(ENTITIES), std::end(ENTITIES),
+                                                  [c](const auto &e) { return e.first == c; });
+                out += entity == std::end(ENTITIES) ? std::string(1, c) : std::string(entity->second);
+            }
+            return out;
+        }
+
+        const char *kindColour(PrimitiveKind kind)
+        {
+            switch (kind)
+            {
+                case PrimitiveKind::Transit:
+                    return "#1f77b4";
+                case PrimitiveKind::Push:
+                    return "#d62728";
+                case PrimitiveKind::Pickup:
+                    return "#2ca02c";
+                case PrimitiveKind::Transfer:
+                    return "#ff7f0e";
+            }
+            return "#000000";
+        }
+
+        const char *objectColour(std::size_t object)
+        {
+            return OBJECT_PALETTE[object % OBJECT_PALETTE.size()];
+        }
+
+        /** Footprint of an upright shape centred at (x, y) turned by yaw: a rectangle or a circle. */
+        Footprint footprint(const Shape &shape, const Eigen::Vector2d &centre, double yaw)
+        {
+            Footprint f{{}, centre, shape.kind == Shape::Kind::Box ? 0.0 : shape.radius};
+            const Eigen::Rotation2Dd rotation(yaw);
+            const Eigen::Vector2d half = shape.boxSize.head<2>() / 2.0;
+            if (shape.kind == Shape::Kind::Box)
+                for (const Eigen::Vector2d &sign : {Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1),
+                                                    Eigen::Vector2d(1, 1), Eigen::Vector2d(-1, 1)})
+                    f.corners.push_back(centre + rotation * half.cwiseProduct(sign));
+            return f;
+        }
+
+        /** An obstacle's footprint, using only its pose's rotation about z. */
+        Footprint footprint(const Shape &shape, const Eigen::Isometry3d &pose)
+        {
+            return footprint(shape, pose.translation().head<2>(),
+                             std::atan2(pose.linear()(1, 0), pose.linear()(0, 0)));
+        }
+
+        Footprint footprint(const Shape &shape, const ObjectPose &pose)
+        {
+            return footprint(shape, pose.position.head<2>(), pose.yaw);
+        }
+
+        /** World height of the highest point of a shape at a pose. */
+        double topHeight(const Shape &shape, const Eigen::Isometry3d &pose)
+        {
+            const Eigen::Matrix3d &r = pose.linear();
+            double reach = shape.radius;
+            if (shape.kind == Shape::Kind::Box)
+                reach = (r.row(2).cwiseAbs().transpose().cwiseProduct(shape.boxSize / 2.0)).sum();
+            else if (shape.kind == Shape::Kind::Cylinder)
+                reach = std::abs(r(2, 2)) * shape.length / 2.0 +
+                        shape.radius * std::sqrt(std::max(0.0, 1.0 - r(2, 2) * r(2, 2)));
+            return pose.translation().z() + reach;
+        }
+
+        long long heightKey(double height)
+        {
+            return std::llround(height / HEIGHT_QUANTUM);
+        }
+
+        /** Obstacles and surfaces in painter's order; floor slabs are marked to be drawn faintly. */
+        void addGround(const Scene &scene, Picture &picture)
+        {
+            long long lowestSurface = std::numeric_limits<long long>::max();
+            for (const SupportSurface &s : scene.surfaces)
+            {
+                Footprint rectangle;
+                rectangle.corners = {s.min, {s.max.x(), s.min.y()}, s.max, {s.min.x(), s.max.y()}};
+                rectangle.centre = (s.min + s.max) / 2.0;
+                lowestSurface = std::min(lowestSurface, heightKey(s.height));
+                picture.ground.push_back({heightKey(s.height), true, false, rectangle, s.name});
+            }
+            for (const Obstacle &obstacle : scene.obstacles)
+            {
+                const long long top = heightKey(topHeight(obstacle.shape, obstacle.pose));
+                picture.ground.push_back({top, false, top <= lowestSurface,
+                                          footprint(obstacle.shape, obstacle.pose), obstacle.name});
+            }
+            std::stable_sort(
+                picture.ground.begin(), picture.ground.end(),
+                [](const GroundItem &a, const GroundItem &b)
+                { return a.topKey != b.topKey ? a.topKey < b.topKey : !a.isSurface && b.isSurface; });
+        }
+
+        /** Circle of the tool link's first round shape, where the robot stands in this state. */
+        std::optional<Footprint> robotFootprint(const ManipulationStateSpace &space,
+                                                const ompl::base::State *state)
+        {
+            const ManipulationModel &model = *space.model();
+            if (!model.isMobileBase())
+                return std::nullopt;
+            for (const LinkShape &linkShape : model.robot().links()[model.toolLink()].shapes)
+            {
+                if (linkShape.shape.kind == Shape::Kind::Box)
+                    continue;
+                const Eigen::Isometry3d link = model.robot().linkFrame(
+                    space.robotValues(state), model.scene().robot.basePose, model.toolLink());
+                return Footprint{
+                    {}, (link * linkShape.origin).translation().head<2>(), linkShape.shape.radius};
+            }
+            return std::nullopt;
+        }
+
+        void addGoals(const ManipulationSetup &setup, const ompl::base::State *start, Picture &picture)
+        {
+            const ManipulationStateSpace &space = *setup.manipulationSpace();
+            const Scene &scene = space.model()->scene();
+            for (const ObjectGoal &goal : scene.objectGoals)
+            {
+                if (!goal.position[0] || !goal.position[1])
+                    continue;
+                const int object = scene.objectIndex(goal.object);
+                picture.goals.push_back({Eigen::Vector2d(*goal.position[0], *goal.position[1]),
+                                         "goal " + goal.object,
+                                         object < 0 ? ROBOT_COLOUR : objectColour(object)});
+            }
+            const std::vector<GoalCoordinate> &joints = scene.robotGoal.joints;
+            const bool complete = joints.size() == space.robotDimension() &&
+                                  std::all_of(joints.begin(), joints.end(),
+                                              [](const GoalCoordinate &j) { return j.has_value(); });
+            if (!space.model()->isMobileBase() || !complete)
+                return;
+            ompl::base::ScopedState<> goal(setup.getStateSpace());
+            space.copyState(goal.get(), start);
+            for (std::size_t j = 0; j < joints.size(); ++j)
+                space.robotValues(goal.get())[j] = *joints[j];
+            picture.goals.push_back({space.toolPosition(goal.get()).head<2>(), "goal robot", ROBOT_COLOUR});
+        }
+
+        /** Tool course (interpolated as the space moves the robot), waypoints and push arrows. */
+        void addPath(const ManipulationSetup &setup, const ManipulationPath &path, Picture &picture)
+        {
+            const ManipulationStateSpace &space = *setup.manipulationSpace();
+            ompl::base::ScopedState<> between(setup.getStateSpace());
+            for (std::size_t i = 0; i < path.getStateCount(); ++i)
+            {
+                picture.waypoints.push_back(space.toolPosition(path.getState(i)).head<2>());
+                if (i + 1 == path.getStateCount() || i >= path.labels().size())
+                    continue;
+                const SegmentLabel &label = path.label(i);
+                ToolSegment segment{label.kind, {}};
+                for (unsigned int k = 0; k <= SUB_STEPS; ++k)
+                {
+                    space.interpolate(path.getState(i), path.getState(i + 1),
+                                      static_cast<double>(k) / SUB_STEPS, between.get());
+                    segment.points.push_back(space.toolPosition(between.get()).head<2>());
+                }
+                picture.segments.push_back(std::move(segment));
+                if (label.kind != PrimitiveKind::Push || label.object < 0 ||
+                    label.object >= static_cast<int>(space.objectCount()))
+                    continue;
+                const Eigen::Vector2d from = space.objectPosition(path.getState(i), label.object).head<2>();
+                const Eigen::Vector2d to = space.objectPosition(path.getState(i + 1), label.object).head<2>();
+                // a push that did not move its object has no direction to show
+                if ((to - from).norm() > 1e-6)
+                    picture.pushArrows.emplace_back(from, to);
+            }
+        }
+
+        Picture buildPicture(const ManipulationSetup &setup, const ManipulationPath *path)
+        {
+            const ompl::base::ProblemDefinitionPtr &pdef = setup.getProblemDefinition();
+            if (pdef->getStartStateCount() == 0)
+                throw ompl::Exception("writeSceneSvg", "the problem has no start state");
+            const ompl::base::State *start = pdef->getStartState(0);
+            const ManipulationStateSpace &space = *setup.manipulationSpace();
+            const Scene &scene = space.model()->scene();
+            const ompl::base::State *end = path != nullptr && path->getStateCount() > 0
+                                               ? path->getState(path->getStateCount() - 1)
+                                               : nullptr;
+
+            Picture picture;
+            addGround(scene, picture);
+            for (unsigned int i = 0; i < space.objectCount(); ++i)
+            {
+                picture.objectStart.push_back(footprint(scene.objects[i].shape, space.objectPose(start, i)));
+                if (end != nullptr)
+                    picture.objectEnd.push_back(footprint(scene.objects[i].shape, space.objectPose(end, i)));
+            }
+            addGoals(setup, start, picture);
+            picture.robotStart = robotFootprint(space, start);
+            if (end != nullptr)
+            {
+                addPath(setup, *path, picture);
+                picture.robotEnd = robotFootprint(space, end);
+            }
+            return picture;
+        }
+
+        void extend(Eigen::AlignedBox2d &box, const Footprint &f)
+        {
+            box.extend(f.centre - Eigen::Vector2d::Constant(f.radius));
+            box.extend(f.centre + Eigen::Vector2d::Constant(f.radius));
+            for (const Eigen::Vector2d &corner : f.corners)
+                box.extend(corner);
+        }
+
+        /** The world box holding everything drawn (floor slabs included: they are drawn too). */
+        Eigen::AlignedBox2d bounds(const Picture &picture)
+        {
+            Eigen::AlignedBox2d box;
+            for (const GroundItem &item : picture.ground)
+                extend(box, item.footprint);
+            for (const std::vector<Footprint> *list : {&picture.objectStart, &picture.objectEnd})
+                for (const Footprint &f : *list)
+                    extend(box, f);
+            for (const std::optional<Footprint> &robot : {picture.robotStart, picture.robotEnd})
+                if (robot)
+                    extend(box, *robot);
+            for (const GoalMarker &goal : picture.goals)
+                box.extend(goal.at);
+            for (const ToolSegment &segment : picture.segments)
+                for (const Eigen::Vector2d &p : segment.points)
+                    box.extend(p);
+            if (box.isEmpty())
+                box.extend(Eigen::Vector2d::Zero());
+            return box;
+        }
+
+        /** "x,y x,y …" in pixels. */
+        std::string pointList(const Frame &frame, const std::vector<Eigen::Vector2d> &points)
+        {
+            std::string list;
+            for (const Eigen::Vector2d &point : points)
+            {
+                const Eigen::Vector2d p = frame.map(point);
+                list += (list.empty() ? "" : " ") + num(p.x()) + "," + num(p.y());
+            }
+            return list;
+        }
+
+        void writeCircle(std::ostream &out, const Eigen::Vector2d &c, double r, const std::string &attributes,
+                         const std::string &content = "")
+        {
+            out << "<circle " << attributes << " cx=\"" << num(c.x()) << "\" cy=\"" << num(c.y()) << "\" r=\""
+                << num(r) << "\">" << content << "</circle>\n";
+        }
+
+        void writeLine(std::ostream &out, const Eigen::Vector2d &a, const Eigen::Vector2d &b,
+                       const std::string &attributes)
+        {
+            out << "<line " << attributes << " x1=\"" << num(a.x()) << "\" y1=\"" << num(a.y()) << "\" x2=\""
+                << num(b.x()) << "\" y2=\"" << num(b.y()) << "\"/>\n";
+        }
+
+        /** One element for a footprint: a circle or a polygon; attributes are written verbatim. */
+        void writeFootprint(std::ostream &out, const Frame &frame, const Footprint &f,
+                            const std::string &attributes, const std::string &name)
+        {
+            const std::string title = name.empty() ? "" : "<title>" + escape(name) + "</title>";
+            if (f.corners.empty())
+                writeCircle(out, frame.map(f.centre), f.radius * frame.scale, attributes, title);
+            else
+                out << "<polygon " << attributes << " points=\"" << pointList(frame, f.corners) << "\">"
+                    << title << "</polygon>\n";
+        }
+
+        void writeText(std::ostream &out, const Eigen::Vector2d &at, const std::string &text,
+                       const std::string &attributes)
+        {
+            out << "<text x=\"" << num(at.x()) << "\" y=\"" << num(at.y()) << "\" " << attributes << ">"
+                << escape(text) << "</text>\n";
+        }
+
+        void writeHeader(std::ostream &out, const Frame &frame)
+        {
+            const std::string width = num(WIDTH_PX);
+            const std::string height = num(frame.height);
+            out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                << R"(<svg xmlns="http://www.w3.org/2000/svg" width=")" << width << R"(" height=")" << height
+                << R"(" viewBox="0.00 0.00 )" << width << " " << height << R"(" font-family="sans-serif">)"
+                << "\n"
+                << R"(<defs><marker id="arrowhead" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="5" )"
+                << R"(markerHeight="5" orient="auto"><path d="M0,0 L10,5 L0,10 z" fill=")" << ARROW_COLOUR
+                << "\"/></marker></defs>\n"
+                << R"(<rect class="background" x="0" y="0" width="100%" height="100%" fill="white"/>)"
+                << "\n";
+        }
+
+        /** Attributes of a dashed outline (a start pose). */
+        std::string outlineStyle(const char *cls, const std::string &colour)
+        {
+            return std::string("class=\"") + cls + R"(" fill="none" stroke=")" + colour +
+                   R"(" stroke-width="2" stroke-dasharray="6 4")";
+        }
+
+        /** Attributes of a filled footprint. */
+        std::string fillStyle(const char *cls, const std::string &colour, const std::string &opacity)
+        {
+            return std::string("class=\"") + cls + R"(" fill=")" + colour + R"(" fill-opacity=")" + opacity +
+                   R"(" stroke=")" + colour + R"(" stroke-width="1")";
+        }
+
+        void writeGround(std::ostream &out, const Frame &frame, const Picture &picture)
+        {
+            // floor slabs are faint so the floor's outline and anything on it stay readable
+            for (const GroundItem &item : picture.ground)
+                writeFootprint(out, frame, item.footprint,
+                               item.isSurface
+                                   ? fillStyle("surface", SURFACE_COLOUR, "1")
+                                   : fillStyle("obstacle", OBSTACLE_COLOUR, item.faint ? "0.25" : "1"),
+                               item.name);
+        }
+
+        void writeObjectsAndRobot(std::ostream &out, const Frame &frame, const Scene &scene,
+                                  const Picture &picture)
+        {
+            // the robot under the objects it touches; start outlines last, so fills never hide them
+            if (picture.robotStart)
+                writeFootprint(out, frame, *picture.robotStart, outlineStyle("robot-start", ROBOT_COLOUR),
+                               "robot");
+            if (picture.robotEnd)
+                writeFootprint(out, frame, *picture.robotEnd, fillStyle("robot-end", ROBOT_COLOUR, "0.35"),
+                               "robot");
+            for (std::size_t i = 0; i < picture.objectEnd.size(); ++i)
+                writeFootprint(out, frame, picture.objectEnd[i],
+                               fillStyle("object-end", objectColour(i), "0.85"), scene.objects[i].name);
+            for (std::size_t i = 0; i < picture.objectStart.size(); ++i)
+                writeFootprint(out, frame, picture.objectStart[i],
+                               outlineStyle("object-start", objectColour(i)), scene.objects[i].name);
+        }
+
+        void writePath(std::ostream &out, const Frame &frame, const Picture &picture)
+        {
+            for (const ToolSegment &segment : picture.segments)
+            {
+                out << "<polyline class=\"tool-path\" fill=\"none\" stroke=\"" << kindColour(segment.kind)
+                    << R"(" stroke-width="2.5" stroke-linecap="round" stroke-linejoin="round" points=")"
+                    << pointList(frame, segment.points) << "\"><title>" << primitiveKindName(segment.kind)
+                    << "</title></polyline>\n";
+            }
+            for (const auto &[from, to] : picture.pushArrows)
+                writeLine(out, frame.map(from), frame.map(to),
+                          std::string("class=\"push-arrow\" ") + ARROW_STYLE);
+            for (const Eigen::Vector2d &waypoint : picture.waypoints)
+                writeCircle(out, frame.map(waypoint), 2.5, R"(class="waypoint" fill="black")");
+        }
+
+        /** A ring with a cross, centred at c (pixels), over a white halo so it shows on any fill. */
+        void writeGoalSymbol(std::ostream &out, const Eigen::Vector2d &c, const std::string &colour,
+                             const char *cls)
+        {
+            const std::string shape = "<circle cx=\"" + num(c.x()) + "\" cy=\"" + num(c.y()) +
+                                      "\" r=\"7\"/><path d=\"M" + num(c.x() - 10) + "," + num(c.y()) + " H" +
+                                      num(c.x() + 10) + " M" + num(c.x()) + "," + num(c.y() - 10) + " V" +
+                                      num(c.y() + 10) + "\"/>";
+            out << "<g class=\"" << cls << "\" fill=\"none\"><g stroke=\"white\" stroke-width=\"4\">" << shape
+                << "</g><g stroke=\"" << colour << "\" stroke-width=\"2\">" << shape << "</g></g>\n";
+        }
+
+        /** Where a footprint's label goes: just above it, so the path and arrows inside stay visible. */
+        Eigen::Vector2d labelAnchor(const Frame &frame, const Footprint &f)
+        {
+            double halfHeight = f.radius;
+            for (const Eigen::Vector2d &corner : f.corners)
+                halfHeight = std::max(halfHeight, std::abs(corner.y() - f.centre.y()));
+            return frame.map(f.centre) - Eigen::Vector2d(0.0, halfHeight * frame.scale + 5.0);
+        }
+
+        void writeLabels(std::ostream &out, const Frame &frame, const Scene &scene, const Picture &picture)
+        {
+            const std::string style =
+                "class=\"label\" font-size=\"12\" text-anchor=\"middle\" stroke=\"white\" stroke-width=\"3\" "
+                "paint-order=\"stroke\" fill=\"black\"";
+            for (const GoalMarker &goal : picture.goals)
+            {
+                writeGoalSymbol(out, frame.map(goal.at), goal.colour, "goal");
+                writeText(out, frame.map(goal.at) + Eigen::Vector2d(0.0, 24.0), goal.label, style);
+            }
+            // an object that moved is named at both places, unless the two names would overlap
+            for (std::size_t i = 0; i < picture.objectStart.size(); ++i)
+            {
+                const Eigen::Vector2d start = labelAnchor(frame, picture.objectStart[i]);
+                bool nameStart = true;
+                if (i < picture.objectEnd.size())
+                {
+                    const Eigen::Vector2d end = labelAnchor(frame, picture.objectEnd[i]);
+                    writeText(out, end, scene.objects[i].name, style);
+                    nameStart = std::abs(end.x() - start.x()) > 40.0 || std::abs(end.y() - start.y()) > 14.0;
+                }
+                if (nameStart)
+                    writeText(out, start, scene.objects[i].name, style);
+            }
+            if (picture.robotStart)
+                writeText(out, labelAnchor(frame, *picture.robotStart), "robot", style);
+        }
+
+        /** Largest power of ten at most a quarter of the width (1 m for room-sized scenes). */
+        double scaleBarLength(double metresAcross)
+        {
+            return std::pow(10.0, std::floor(std::log10(metresAcross / 4.0)));
+        }
+
+        void writeTitleAndScale(std::ostream &out, const Frame &frame, const Scene &scene,
+                                const ManipulationPath *path)
+        {
+            std::string title = "scene " + (scene.name.empty() ? std::string("(unnamed)") : scene.name);
+            if (path != nullptr)
+                title += ": " + std::to_string(path->getStateCount()) + " waypoints, tool path " +
+                         num(path->getStateCount() > 0 ? path->toolPathLength() : 0.0) + " m";
+            writeText(out, {12.0, 21.0}, title, "class=\"title\" font-size=\"15\" font-weight=\"bold\"");
+
+            const double metres = scaleBarLength(WIDTH_PX / frame.scale);
+            const double length = metres * frame.scale;
+            const double right = WIDTH_PX - 12.0;
+            out << "<path class=\"scale-bar\" d=\"M" << num(right - length) << ",12.00 V20.00 H" << num(right)
+                << " V12.00\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>\n";
+            std::ostringstream label;
+            label.imbue(std::locale::classic());
+            label << metres << " m";
+            writeText(out, {right - length - 6.0, 21.0}, label.str(),
+                      "class=\"scale-label\" font-size=\"12\" text-anchor=\"end\"");
+        }
+
+        void writeLegend(std::ostream &out, const Frame &frame)
+        {
+            const double y = frame.height - LEGEND_PX / 2.0;
+            double x = 16.0;
+            const std::string text = "class=\"legend\" font-size=\"12\"";
+            for (PrimitiveKind kind : {PrimitiveKind::Transit, PrimitiveKind::Push, PrimitiveKind::Pickup,
+                                       PrimitiveKind::Transfer})
+            {
+                writeLine(out, {x, y}, {x + 24, y},
+                          std::string("stroke=\"") + kindColour(kind) + "\" stroke-width=\"2.5\"");
+                writeText(out, {x + 30, y + 4}, primitiveKindName(kind), text);
+                x += 100.0;
+            }
+            writeCircle(out, {x + 8, y}, 7.0,
+                        R"(fill="none" stroke="black" stroke-width="1.5" stroke-dasharray="4 3")");
+            writeText(out, {x + 22, y + 4}, "start", text);
+            x += 80.0;
+            writeCircle(out, {x + 8, y}, 7.0, R"(fill="#777777")");
+            writeText(out, {x + 22, y + 4}, "end", text);
+            x += 70.0;
+            writeGoalSymbol(out, {x + 8, y}, "black", "legend");
+            writeText(out, {x + 24, y + 4}, "goal", text);
+            x += 70.0;
+            writeLine(out, {x, y}, {x + 28, y}, ARROW_STYLE);
+            writeText(out, {x + 34, y + 4}, "pushed object", text);
+        }
+    }  // namespace
+
+    void writeSceneSvg(std::ostream &out, const ManipulationSetup &setup, const ManipulationPath *path)
+    {
+        const Scene &scene = setup.model()->scene();
+        const Picture picture = buildPicture(setup, path);
+        const Frame frame = fitFrame(bounds(picture));
+        writeHeader(out, frame);
+        writeGround(out, frame, picture);
+        writeObjectsAndRobot(out, frame, scene, picture);
+        writePath(out, frame, picture);
+        writeLabels(out, frame, scene, picture);
+        writeTitleAndScale(out, frame, scene, path);
+        writeLegend(out, frame);
+        out << "</svg>\n";
+    }
+}  // namespace ompl_mm

@@ -1,0 +1,43 @@
+/* The empty-space planner (ESP) of MOPL: chains useful primitives from a start towards a target
+   configuration as if there were no obstacles. Primitives are tried in a shuffled order in
+   passes; a primitive that fails is skipped until another one succeeds; planning stops when a
+   pass finds nothing useful left to try. Collisions are checked by the caller. */
+#pragma once
+
+#include "ompl_mm/primitives/Primitive.h"
+
+#include <ompl/util/RandomNumbers.h>
+
+#include <vector>
+
+namespace ompl_mm
+{
+    class EmptySpacePlanner
+    {
+    public:
+        enum class Outcome
+        {
+            Reached,       ///< the trajectory ends at the target
+            Partial,       ///< it moved, but no primitive could finish
+            AlreadyThere,  ///< start equals target
+            Failed         ///< no primitive could move at all
+        };
+
+        /** Bound on primitive applications per call, so a cycle of primitives cannot hang it. */
+        static constexpr unsigned int MAX_STEPS = 64;
+
+        EmptySpacePlanner(const ManipulationStateSpace *space, std::vector<PrimitivePtr> primitives);
+
+        const std::vector<PrimitivePtr> &primitives() const { return primitives_; }
+
+        /** Plans from `from` towards `to`; trajectory is reset to start at from. */
+        Outcome plan(const ompl::base::State *from, const ompl::base::State *to, Trajectory &trajectory,
+                     ompl::RNG &rng);
+
+    private:
+        const ManipulationStateSpace *space_;
+        std::vector<PrimitivePtr> primitives_;
+        std::vector<std::size_t> order_;
+        std::vector<char> failed_;
+    };
+}  // namespace ompl_mm

@@ -1,0 +1,99 @@
+/* One search tree of MOPL: vertices with their parent, the label of the edge to the parent and
+   the cached metric quantities. Nearest-neighbour search is exact for the directed manipulation
+   metric, which no metric tree can index: vertices are grouped by object configuration (a vertex
+   reached by a transit joins its parent's group), a group is skipped whole when a lower bound of
+   its distance (its objects' cost, the robot's distance to the group's bounding boxes of joints
+   and tool points, and the tool's shortest approach and return) reaches the best distance so
+   far, and the rest are scanned with early termination. */
+#pragma once
+
+#include "ompl_mm/base/ManipulationMetric.h"
+#include "ompl_mm/primitives/Trajectory.h"
+
+#include <vector>
+
+namespace ompl_mm
+{
+    /** Owns its states. forward: edges lead away from the roots (start tree); backward: edges
+        lead towards the roots (goal tree), and a vertex's label is that of the edge to its parent. */
+    class ManipulationTree
+    {
+    public:
+        struct Vertex
+        {
+            ompl::base::State *state;
+            int parent;          ///< -1 for a root
+            SegmentLabel label;  ///< of the edge between parent and this vertex
+            MetricPoint point;
+            std::size_t group;  ///< index of its object configuration
+        };
+
+        ManipulationTree(const ManipulationStateSpace *space, const ManipulationMetric *metric, bool forward);
+        ~ManipulationTree();
+        ManipulationTree(const ManipulationTree &) = delete;
+        ManipulationTree &operator=(const ManipulationTree &) = delete;
+
+        bool forward() const { return forward_; }
+        std::size_t size() const { return vertices_.size(); }
+        bool empty() const { return vertices_.empty(); }
+        const Vertex &vertex(std::size_t i) const { return vertices_[i]; }
+        std::size_t rootCount() const { return roots_; }
+
+        /** Adds a copy of state; returns its index. */
+        int add(const ompl::base::State *state, int parent, SegmentLabel label);
+        /** Removes the most recently added vertex. @pre it has no children. */
+        void removeLast();
+        void clear();
+
+        /** Index of the vertex nearest to the prepared sample (made for this tree's direction),
+            and its distance in *distance; -1 when the tree is empty. */
+        int nearest(const ManipulationMetric::Query &query, double *distance) const;
+
+        /** Indices from a root to vertex i (forward tree) or from vertex i to its root (backward). */
+        std::vector<int> branch(int i) const;
+
+    private:
+        const ManipulationStateSpace *space_;
+        const ManipulationMetric *metric_;
+        bool forward_;
+        /** Boxes around the joints and tool points of some vertices. */
+        struct Bounds
+        {
+            Eigen::AlignedBox<double, Eigen::Dynamic> joints;
+            Eigen::AlignedBox3d tools;
+            void extend(const MetricPoint &point);
+        };
+
+        /** Consecutive members of a group (often neighbours along one extension) with their bounds. */
+        struct Block
+        {
+            std::size_t begin, end;  ///< range in Group::members
+            Bounds bounds;
+        };
+
+        /** Vertices sharing one object configuration. */
+        struct Group
+        {
+            int first;  ///< a member, whose point holds the objects
+            std::vector<int> members;
+            Bounds bounds;
+            std::vector<Block> blocks;
+        };
+
+        /** Members per block. */
+        static constexpr std::size_t BLOCK_SIZE = 8;
+
+        /** Lower bound of the distance from vertices of group g within bounds to the query. */
+        double lowerBound(std::size_t g, const Bounds &bounds, const ManipulationMetric::Query &query,
+                          Eigen::Map<const Eigen::VectorXd> queryJoints) const;
+        /** Scans the blocks of group g whose bounds may beat *bestDistance. */
+        void scanGroup(std::size_t g, const ManipulationMetric::Query &query,
+                       Eigen::Map<const Eigen::VectorXd> queryJoints, int *best, double *bestDistance) const;
+
+        std::vector<Vertex> vertices_;
+        std::vector<Group> groups_;
+        mutable std::vector<ManipulationMetric::ObjectCost> groupCosts_;
+        mutable std::vector<double> groupBounds_;
+        std::size_t roots_{0};
+    };
+}  // namespace ompl_mm

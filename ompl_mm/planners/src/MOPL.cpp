@@ -1,0 +1,449 @@
+#include "ompl_mm/planners/MOPL.h"
+
+#include "ompl_mm/base/ManipulationValidityChecker.h"
+
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/goals/GoalState.h>
+#include <ompl/util/Time.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace ob = ompl::base;
+
+namespace ompl_mm
+{
+    namespace
+    {
+        /** Adds the time from construction to destruction to an accumulator, in seconds. */
+        class ScopedTimer
+        {
+        public:
+            explicit ScopedTimer(double &total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+            ~ScopedTimer()
+            {
+                total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+            }
+            ScopedTimer(const ScopedTimer &) = delete;
+            ScopedTimer &operator=(const ScopedTimer &) = delete;
+
+        private:
+            double &total_;
+            std::chrono::steady_clock::time_point start_;
+        };
+
+        const ManipulationStateSpace *manipulationSpace(const ob::SpaceInformationPtr &si)
+        {
+            const auto *space = dynamic_cast<const ManipulationStateSpace *>(si->getStateSpace().get());
+            if (!space)
+                throw ompl::Exception(
+                    "MOPL", "needs a ManipulationStateSpace, got " + si->getStateSpace()->getName());
+            return space;
+        }
+    }  // namespace
+
+    MOPL::MOPL(const ob::SpaceInformationPtr &si, std::vector<PrimitivePtr> primitives)
+        : ob::Planner(si, "MOPL"),
+          primitives_(std::move(primitives)),
+          space_(manipulationSpace(si)),
+          metric_(std::make_unique<ManipulationMetric>(space_))
+    {
+        specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
+        specs_.approximateSolutions = false;
+        specs_.directed = true;
+        declareParameters();
+        addPlannerProgressProperty("iterations INTEGER",
+                                   [this] { return std::to_string(statistics_.iterations); });
+        addPlannerProgressProperty("start tree vertices INTEGER",
+                                   [this] { return std::to_string(startTree_ ? startTree_->size() : 0); });
+        addPlannerProgressProperty("goal tree vertices INTEGER",
+                                   [this] { return std::to_string(goalTree_ ? goalTree_->size() : 0); });
+    }
+
+    MOPL::~MOPL() = default;
+
+    void MOPL::declareParameters()
+    {
+        declareParam<double>("connect_step", this, &MOPL::setConnectStep, &MOPL::getConnectStep,
+                             "0.001:0.001:1.");
+        declareParam<double>("vertex_step", this, &MOPL::setVertexStep, &MOPL::getVertexStep,
+                             "0.01:0.01:10.");
+        declareParam<unsigned int>("smoothing_attempts", this, &MOPL::setSmoothingAttempts,
+                                   &MOPL::getSmoothingAttempts, "0:1:10000");
+        auto weight =
+            [this](const std::string &name, double ManipulationMetric::Weights::*field, const char *range)
+        {
+            params().declareParam<double>(
+                name, [this, field](double v) { metric_->weights().*field = v; },
+                [this, field]() { return metric_->weights().*field; });
+            params()[name].setRangeSuggestion(range);
+        };
+        weight("robot_weight", &ManipulationMetric::Weights::robotWeight, "0.:0.1:100.");
+        weight("moving_object_penalty", &ManipulationMetric::Weights::movingObjectPenalty, "0.:0.1:100.");
+        weight("move_to_object_penalty", &ManipulationMetric::Weights::moveToObjectPenalty, "0.:0.1:100.");
+        weight("move_to_object_factor", &ManipulationMetric::Weights::moveToObjectFactor, "0.:0.1:100.");
+        weight("contact_distance", &ManipulationMetric::Weights::contactDistance, "0.:0.01:10.");
+        auto probability = [this](const std::string &name, double ModalSampler::Probabilities::*field)
+        {
+            params().declareParam<double>(
+                name,
+                [this, name, field](double v)
+                {
+                    if (!(v >= 0.0 && v <= 1.0))
+                        throw ompl::Exception("MOPL", name + " must be in [0, 1], got " + std::to_string(v));
+                    probabilities_.*field = v;
+                },
+                [this, field]() { return probabilities_.*field; });
+            params()[name].setRangeSuggestion("0.:0.05:1.");
+        };
+        probability("object_sample_probability", &ModalSampler::Probabilities::object);
+        probability("undefined_probability", &ModalSampler::Probabilities::undefined);
+        probability("start_value_probability", &ModalSampler::Probabilities::startValue);
+        probability("random_robot_probability", &ModalSampler::Probabilities::randomRobot);
+    }
+
+    void MOPL::setConnectStep(double step)
+    {
+        if (!(step > 0.0) || !std::isfinite(step))
+            throw ompl::Exception("MOPL", "connect_step must be positive, got " + std::to_string(step));
+        connectStep_ = step;
+    }
+
+    void MOPL::setVertexStep(double step)
+    {
+        if (!(step > 0.0) || !std::isfinite(step))
+            throw ompl::Exception("MOPL", "vertex_step must be positive, got " + std::to_string(step));
+        vertexStep_ = step;
+    }
+
+    void MOPL::setPrimitives(std::vector<PrimitivePtr> primitives)
+    {
+        primitives_ = std::move(primitives);
+        setup_ = false;
+    }
+
+    void MOPL::setup()
+    {
+        ob::Planner::setup();
+        if (primitives_.empty())
+            throw ompl::Exception(getName(), "has no primitives: call setPrimitives() first");
+        if (probabilities_.undefined + probabilities_.startValue > 1.0)
+            throw ompl::Exception(getName(), "undefined_probability + start_value_probability exceeds 1");
+        esp_ = std::make_unique<EmptySpacePlanner>(space_, primitives_);
+        startTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), true);
+        goalTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), false);
+    }
+
+    void MOPL::clear()
+    {
+        ob::Planner::clear();
+        if (startTree_)
+            startTree_->clear();
+        if (goalTree_)
+            goalTree_->clear();
+        sampler_.reset();
+        statistics_ = MOPLStatistics();
+    }
+
+    double MOPL::segmentLength(const ob::State *a, const ob::State *b) const
+    {
+        double length = 0.0;
+        const double *qa = space_->robotValues(a);
+        const double *qb = space_->robotValues(b);
+        for (unsigned int j = 0; j < space_->robotDimension(); ++j)
+            length += (qa[j] - qb[j]) * (qa[j] - qb[j]);
+        length = std::sqrt(length);
+        for (unsigned int i = 0; i < space_->objectCount(); ++i)
+            length = std::max(length, (space_->objectPosition(a, i) - space_->objectPosition(b, i)).norm());
+        return length;
+    }
+
+    int MOPL::nearest(ManipulationTree &tree, PartialState &sample, bool *newRoot)
+    {
+        ScopedTimer timer(statistics_.nearestTime);
+        *newRoot = false;
+        metric_->makeQuery(sample, tree.forward(), query_);
+        double best = 0.0;
+        int index = tree.nearest(query_, &best);
+        if (tree.forward())
+            return index;
+
+        // PROJSAMP: the goal state nearest to the sample competes with the goal tree's vertices
+        ob::State *root = space_->allocState();
+        goal_->complete(sample, root, rng_);
+        MetricPoint rootPoint;
+        metric_->makePoint(root, rootPoint);
+        const double rootDistance =
+            metric_->distance(rootPoint, query_, metric_->objectCost(rootPoint, query_), best);
+        if ((index < 0 || rootDistance < best) && si_->isValid(root))
+        {
+            index = tree.add(root, -1, {});
+            *newRoot = true;
+        }
+        space_->freeState(root);
+        return index;
+    }
+
+    MOPL::Extension MOPL::extend(ManipulationTree &tree, int near, const ob::State *target)
+    {
+        Trajectory trajectory(space_);
+        EmptySpacePlanner::Outcome outcome;
+        {
+            ScopedTimer timer(statistics_.propagateTime);
+            // the backward tree needs a motion that ends exactly at its vertex
+            outcome = tree.forward() ? esp_->plan(tree.vertex(near).state, target, trajectory, rng_)
+                                     : esp_->plan(target, tree.vertex(near).state, trajectory, rng_);
+        }
+        if (outcome == EmptySpacePlanner::Outcome::AlreadyThere)
+            return {near, true};
+        if (outcome == EmptySpacePlanner::Outcome::Failed ||
+            (!tree.forward() && outcome != EmptySpacePlanner::Outcome::Reached))
+            return {};
+        ScopedTimer timer(statistics_.connectTime);
+        Extension extension = walk(tree, near, trajectory);
+        extension.reached = extension.reached && outcome == EmptySpacePlanner::Outcome::Reached;
+        return extension;
+    }
+
+    MOPL::Extension MOPL::walk(ManipulationTree &tree, int near, const Trajectory &trajectory)
+    {
+        // walk away from the tree: forward along the trajectory, or backward from its end
+        const bool forward = tree.forward();
+        const std::size_t segments = trajectory.size() - 1;
+        Extension extension;
+        int parent = near;
+        double sinceVertex = 0.0;
+        ob::State *state = space_->allocState();
+        ob::State *lastValid = space_->allocState();
+        space_->copyState(lastValid, tree.vertex(near).state);
+        bool blocked = false;
+        for (std::size_t s = 0; s < segments && !blocked; ++s)
+        {
+            const std::size_t i = forward ? s : segments - 1 - s;
+            const ob::State *a = trajectory.state(i);
+            const ob::State *b = trajectory.state(i + 1);
+            const SegmentLabel label = trajectory.label(i);
+            const double length = segmentLength(a, b);
+            const unsigned int steps =
+                std::max(1u, static_cast<unsigned int>(std::ceil(length / connectStep_)));
+            for (unsigned int k = 1; k <= steps; ++k)
+            {
+                const double t = static_cast<double>(k) / steps;
+                space_->interpolate(a, b, forward ? t : 1.0 - t, state);
+                if (!si_->isValid(state))
+                {
+                    if (sinceVertex > 0.0)
+                        extension.last = parent = tree.add(lastValid, parent, label);
+                    blocked = true;
+                    break;
+                }
+                space_->copyState(lastValid, state);
+                sinceVertex += length / steps;
+                if (k == steps || sinceVertex >= vertexStep_)
+                {
+                    // waypoints are exact: mode switches happen there
+                    const ob::State *vertexState = k == steps ? (forward ? b : a) : state;
+                    extension.last = parent = tree.add(vertexState, parent, label);
+                    sinceVertex = 0.0;
+                }
+            }
+        }
+        extension.reached = !blocked;
+        space_->freeState(state);
+        space_->freeState(lastValid);
+        return extension;
+    }
+
+    ob::PlannerStatus MOPL::solve(const ob::PlannerTerminationCondition &ptc)
+    {
+        checkValidity();
+        goal_ = dynamic_cast<const ManipulationGoal *>(pdef_->getGoal().get());
+        if (!goal_)
+        {
+            OMPL_ERROR("%s: the goal must be a ManipulationGoal", getName().c_str());
+            return ob::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
+        }
+        if (startTree_->empty())
+        {
+            const ob::State *start = pis_.nextStart();
+            if (!start)
+            {
+                OMPL_ERROR("%s: no valid start state", getName().c_str());
+                return ob::PlannerStatus::INVALID_START;
+            }
+            startTree_->add(start, -1, {});
+            // goal values of the sampler: the goal's coordinates, the start's elsewhere
+            PartialState fromStart(space_);
+            space_->copyState(fromStart.state(), start);
+            ob::State *goalState = space_->allocState();
+            goal_->complete(fromStart, goalState, rng_);
+            sampler_ = std::make_unique<ModalSampler>(space_, goal_, start, goalState);
+            sampler_->probabilities() = probabilities_;
+            space_->freeState(goalState);
+        }
+        auto *checker = dynamic_cast<ManipulationValidityChecker *>(si_->getStateValidityChecker().get());
+        const std::uint64_t queriesBefore = checker ? checker->queryCount() : 0;
+        const std::uint64_t freeBefore = checker ? checker->freeQueryCount() : 0;
+        const auto countQueries = [&]
+        {
+            if (checker)
+            {
+                statistics_.collisionQueries = checker->queryCount() - queriesBefore;
+                statistics_.freeCollisionQueries = checker->freeQueryCount() - freeBefore;
+            }
+        };
+
+        if (goal_->isSatisfied(startTree_->vertex(0).state))
+        {
+            addSolution(0, -1);
+            return ob::PlannerStatus::EXACT_SOLUTION;
+        }
+
+        PartialState sample(space_);
+        PartialState connectTarget(space_);
+        bool forward = true;
+        while (!ptc)
+        {
+            ++statistics_.iterations;
+            ManipulationTree &a = forward ? *startTree_ : *goalTree_;
+            ManipulationTree &b = forward ? *goalTree_ : *startTree_;
+            forward = !forward;
+            {
+                ScopedTimer timer(statistics_.samplingTime);
+                sampler_->sample(sample, a.forward(), rng_);
+            }
+            bool newRoot = false;
+            const int near = nearest(a, sample, &newRoot);
+            if (near < 0)
+                continue;
+            sample.complete(a.vertex(near).state, sample.state());
+            const Extension grown = extend(a, near, sample.state());
+            if (grown.last < 0 || grown.last == near)
+            {
+                if (newRoot)
+                    a.removeLast();
+                continue;
+            }
+            if (a.forward() && goal_->isSatisfied(a.vertex(grown.last).state))
+            {
+                addSolution(grown.last, -1);
+                countQueries();
+                return ob::PlannerStatus::EXACT_SOLUTION;
+            }
+
+            // try to connect the other tree to the new vertex
+            space_->copyState(connectTarget.state(), a.vertex(grown.last).state);
+            connectTarget.defineAll();
+            const int nearB = nearest(b, connectTarget, &newRoot);
+            if (nearB < 0)
+                continue;
+            const Extension joined = extend(b, nearB, connectTarget.state());
+            if (newRoot && !joined.reached && (joined.last < 0 || joined.last == nearB))
+                b.removeLast();
+            if (joined.reached)
+            {
+                if (a.forward())
+                    addSolution(grown.last, joined.last);
+                else
+                    addSolution(joined.last, grown.last);
+                countQueries();
+                return ob::PlannerStatus::EXACT_SOLUTION;
+            }
+        }
+        countQueries();
+        OMPL_INFORM("%s: no solution after %llu iterations (%zu + %zu vertices)", getName().c_str(),
+                    static_cast<unsigned long long>(statistics_.iterations), startTree_->size(),
+                    goalTree_->size());
+        return ob::PlannerStatus::TIMEOUT;
+    }
+
+    void MOPL::addSolution(int f, int g)
+    {
+        auto path = std::make_shared<ManipulationPath>(si_);
+        for (int index : startTree_->branch(f))
+        {
+            const ManipulationTree::Vertex &v = startTree_->vertex(index);
+            if (path->getStateCount() == 0)
+                path->appendFirst(v.state);
+            else
+                path->appendLabelled(v.state, v.label);
+        }
+        if (g >= 0)
+        {
+            // the goal tree's branch starts at a copy of f's state; its labels sit on the child side
+            const std::vector<int> branch = goalTree_->branch(g);
+            for (std::size_t k = 1; k < branch.size(); ++k)
+                path->appendLabelled(goalTree_->vertex(branch[k]).state,
+                                     goalTree_->vertex(branch[k - 1]).label);
+        }
+        {
+            ScopedTimer timer(statistics_.smoothingTime);
+            smooth(*path);
+        }
+        pdef_->addSolutionPath(path, false, 0.0, getName());
+    }
+
+    void MOPL::smooth(ManipulationPath &path)
+    {
+        path.removeRepeatedStates();
+        // shortcut each maximal run of transit segments; mode switches stay where they are
+        std::size_t begin = 0;
+        while (begin < path.labels().size())
+        {
+            std::size_t end = begin;
+            while (end < path.labels().size() && path.label(end).kind == PrimitiveKind::Transit)
+                ++end;
+            // transit segments begin … end − 1 join states begin … end
+            for (unsigned int attempt = 0; attempt < smoothingAttempts_ && end > begin + 1; ++attempt)
+            {
+                const auto first = static_cast<std::size_t>(
+                    rng_.uniformInt(static_cast<int>(begin), static_cast<int>(end) - 2));
+                const auto last = static_cast<std::size_t>(
+                    rng_.uniformInt(static_cast<int>(first) + 2, static_cast<int>(end)));
+                if (si_->checkMotion(path.getState(first), path.getState(last)))
+                {
+                    path.shortcut(first, last);
+                    end -= last - first - 1;
+                }
+            }
+            begin = end + 1;
+        }
+    }
+
+    void MOPL::getPlannerData(ob::PlannerData &data) const
+    {
+        ob::Planner::getPlannerData(data);
+        for (const ManipulationTree *tree : {startTree_.get(), goalTree_.get()})
+        {
+            if (!tree)
+                continue;
+            for (std::size_t i = 0; i < tree->size(); ++i)
+            {
+                const ManipulationTree::Vertex &v = tree->vertex(i);
+                const ob::PlannerDataVertex vertex(v.state, tree->forward() ? 1 : 2);
+                if (v.parent < 0)
+                {
+                    if (tree->forward())
+                        data.addStartVertex(vertex);
+                    else
+                        data.addGoalVertex(vertex);
+                    continue;
+                }
+                const ob::PlannerDataVertex parent(tree->vertex(v.parent).state, tree->forward() ? 1 : 2);
+                if (tree->forward())
+                    data.addEdge(parent, vertex);
+                else
+                    data.addEdge(vertex, parent);
+            }
+        }
+        data.properties["time_sampling REAL"] = std::to_string(statistics_.samplingTime);
+        data.properties["time_nearest REAL"] = std::to_string(statistics_.nearestTime);
+        data.properties["time_propagate REAL"] = std::to_string(statistics_.propagateTime);
+        data.properties["time_connect REAL"] = std::to_string(statistics_.connectTime);
+        data.properties["time_smoothing REAL"] = std::to_string(statistics_.smoothingTime);
+        data.properties["time_ik REAL"] = "0";
+        data.properties["iterations INTEGER"] = std::to_string(statistics_.iterations);
+        data.properties["collision_queries INTEGER"] = std::to_string(statistics_.collisionQueries);
+        data.properties["collision_queries_free INTEGER"] = std::to_string(statistics_.freeCollisionQueries);
+    }
+}  // namespace ompl_mm

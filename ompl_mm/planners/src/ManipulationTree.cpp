@@ -1,0 +1,141 @@
+#include "ompl_mm/planners/ManipulationTree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ompl_mm
+{
+    ManipulationTree::ManipulationTree(const ManipulationStateSpace *space, const ManipulationMetric *metric,
+                                       bool forward)
+        : space_(space), metric_(metric), forward_(forward)
+    {
+    }
+
+    ManipulationTree::~ManipulationTree()
+    {
+        clear();
+    }
+
+    int ManipulationTree::add(const ompl::base::State *state, int parent, SegmentLabel label)
+    {
+        const int index = static_cast<int>(vertices_.size());
+        Vertex vertex{space_->cloneState(state), parent, label, {}, groups_.size()};
+        metric_->makePoint(vertex.state, vertex.point);
+        bool objectsMove = parent < 0;
+        for (unsigned int i = 0; i < space_->objectCount() && !objectsMove; ++i)
+            objectsMove = space_->objectMoves(state, vertices_[parent].state, i);
+        const Bounds empty{Eigen::AlignedBox<double, Eigen::Dynamic>(space_->robotDimension()), {}};
+        if (objectsMove)
+            groups_.push_back({index, {}, empty, {}});
+        else
+            vertex.group = vertices_[parent].group;
+        Group &group = groups_[vertex.group];
+        if (group.blocks.empty() || group.blocks.back().end - group.blocks.back().begin == BLOCK_SIZE)
+            group.blocks.push_back({group.members.size(), group.members.size(), empty});
+        group.members.push_back(index);
+        group.bounds.extend(vertex.point);
+        group.blocks.back().bounds.extend(vertex.point);
+        ++group.blocks.back().end;
+        vertices_.push_back(std::move(vertex));
+        if (parent < 0)
+            ++roots_;
+        return index;
+    }
+
+    void ManipulationTree::removeLast()
+    {
+        if (vertices_.back().parent < 0)
+            --roots_;
+        // boxes may stay larger than their members: still valid bounds
+        Group &group = groups_[vertices_.back().group];
+        group.members.pop_back();
+        if (--group.blocks.back().end == group.blocks.back().begin)
+            group.blocks.pop_back();
+        if (group.members.empty())
+            groups_.pop_back();
+        space_->freeState(vertices_.back().state);
+        vertices_.pop_back();
+    }
+
+    void ManipulationTree::clear()
+    {
+        while (!vertices_.empty())
+            removeLast();
+    }
+
+    void ManipulationTree::Bounds::extend(const MetricPoint &point)
+    {
+        joints.extend(Eigen::Map<const Eigen::VectorXd>(point.joints.data(), point.joints.size()));
+        tools.extend(point.tool);
+    }
+
+    double ManipulationTree::lowerBound(std::size_t g, const Bounds &bounds,
+                                        const ManipulationMetric::Query &query,
+                                        Eigen::Map<const Eigen::VectorXd> queryJoints) const
+    {
+        const double joints = std::sqrt(bounds.joints.squaredExteriorDistance(queryJoints));
+        const double tool = std::sqrt(bounds.tools.squaredExteriorDistance(query.point.tool));
+        return groupCosts_[g].bound + metric_->robotLowerBound(query, joints, tool) +
+               metric_->legLowerBound(vertices_[groups_[g].first].point, query, groupCosts_[g], bounds.tools);
+    }
+
+    void ManipulationTree::scanGroup(std::size_t g, const ManipulationMetric::Query &query,
+                                     Eigen::Map<const Eigen::VectorXd> queryJoints, int *best,
+                                     double *bestDistance) const
+    {
+        const Group &group = groups_[g];
+        for (const Block &block : group.blocks)
+        {
+            if (group.blocks.size() > 1 && lowerBound(g, block.bounds, query, queryJoints) >= *bestDistance)
+                continue;
+            for (std::size_t m = block.begin; m < block.end; ++m)
+            {
+                const int i = group.members[m];
+                const double d = metric_->distance(vertices_[i].point, query, groupCosts_[g], *bestDistance);
+                if (d < *bestDistance)
+                {
+                    *bestDistance = d;
+                    *best = i;
+                }
+            }
+        }
+    }
+
+    int ManipulationTree::nearest(const ManipulationMetric::Query &query, double *distance) const
+    {
+        int best = -1;
+        double bestDistance = std::numeric_limits<double>::infinity();
+        // the most promising group first, so that its distance prunes the others
+        const Eigen::Map<const Eigen::VectorXd> queryJoints(query.point.joints.data(),
+                                                            query.point.joints.size());
+        groupCosts_.resize(groups_.size());
+        groupBounds_.resize(groups_.size());
+        std::size_t first = 0;
+        for (std::size_t g = 0; g < groups_.size(); ++g)
+        {
+            groupCosts_[g] = metric_->objectCost(vertices_[groups_[g].first].point, query);
+            groupBounds_[g] = lowerBound(g, groups_[g].bounds, query, queryJoints);
+            if (groupBounds_[g] < groupBounds_[first])
+                first = g;
+        }
+        if (!groups_.empty())
+            scanGroup(first, query, queryJoints, &best, &bestDistance);
+        for (std::size_t g = 0; g < groups_.size(); ++g)
+            if (g != first && groupBounds_[g] < bestDistance)
+                scanGroup(g, query, queryJoints, &best, &bestDistance);
+        if (distance)
+            *distance = bestDistance;
+        return best;
+    }
+
+    std::vector<int> ManipulationTree::branch(int i) const
+    {
+        std::vector<int> indices;
+        for (; i >= 0; i = vertices_[i].parent)
+            indices.push_back(i);
+        if (forward_)
+            std::reverse(indices.begin(), indices.end());
+        return indices;
+    }
+}  // namespace ompl_mm

@@ -1,0 +1,93 @@
+#include "ompl_mm/planners/ModalSampler.h"
+
+namespace ompl_mm
+{
+    ModalSampler::ModalSampler(const ManipulationStateSpace *space, const ManipulationGoal *goal,
+                               const ompl::base::State *start, const ompl::base::State *goalState)
+        : space_(space),
+          goal_(goal),
+          start_(space->cloneState(start)),
+          goalState_(space->cloneState(goalState))
+    {
+    }
+
+    ModalSampler::~ModalSampler()
+    {
+        space_->freeState(start_);
+        space_->freeState(goalState_);
+    }
+
+    void ModalSampler::chooseFixedValue(PartialState &out, unsigned int part, ompl::RNG &rng) const
+    {
+        const bool isRobot = part == 0;
+        const bool goalDefines = isRobot ? goal_->constrainsRobot() : goal_->constrainsObject(part - 1);
+        // a goal value the goal does not define stays undefined
+        const double r = rng.uniform01();
+        const ompl::base::State *source = nullptr;
+        if (r >= probabilities_.undefined + probabilities_.startValue)
+            source = goalDefines ? goalState_ : nullptr;
+        else if (r >= probabilities_.undefined)
+            source = start_;
+
+        if (isRobot)
+        {
+            out.setRobotDefined(source != nullptr);
+            if (source)
+                space_->copyRobot(out.state(), source);
+        }
+        else
+        {
+            out.setObjectDefined(part - 1, source != nullptr);
+            if (source)
+                space_->copyObject(out.state(), source, part - 1);
+        }
+    }
+
+    void ModalSampler::sampleObjectOnSurface(PartialState &out, unsigned int object, ompl::RNG &rng) const
+    {
+        const Scene &scene = space_->model()->scene();
+        const SupportSurface &s =
+            scene.surfaces[rng.uniformInt(0, static_cast<int>(scene.surfaces.size()) - 1)];
+        ObjectPose pose;
+        pose.position = {rng.uniformReal(s.min.x(), s.max.x()), rng.uniformReal(s.min.y(), s.max.y()),
+                         s.height};
+        // no primitive of this planner turns objects, so they keep their start yaw
+        pose.yaw = scene.objects[object].start.yaw;
+        space_->setObjectPose(out.state(), object, pose);
+        out.setObjectDefined(object, true);
+    }
+
+    void ModalSampler::sampleRobot(PartialState &out, bool forwardTree, ompl::RNG &rng) const
+    {
+        out.setRobotDefined(true);
+        const ompl::base::State *farEnd = forwardTree ? goalState_ : start_;
+        if (rng.uniform01() >= probabilities_.randomRobot && (!forwardTree || goal_->constrainsRobot()))
+        {
+            space_->copyRobot(out.state(), farEnd);
+            return;
+        }
+        const RobotModel &robot = space_->model()->robot();
+        double *q = space_->robotValues(out.state());
+        for (unsigned int j = 0; j < robot.dof(); ++j)
+            q[j] = rng.uniformReal(robot.variableJoint(j).lower, robot.variableJoint(j).upper);
+    }
+
+    void ModalSampler::sample(PartialState &out, bool forwardTree, ompl::RNG &rng) const
+    {
+        const unsigned int objects = space_->objectCount();
+        if (objects > 0 && rng.uniform01() < probabilities_.object)
+        {
+            const unsigned int chosen =
+                static_cast<unsigned int>(rng.uniformInt(0, static_cast<int>(objects) - 1));
+            sampleObjectOnSurface(out, chosen, rng);
+            chooseFixedValue(out, 0, rng);
+            for (unsigned int i = 0; i < objects; ++i)
+                if (i != chosen)
+                    chooseFixedValue(out, 1 + i, rng);
+            return;
+        }
+        sampleRobot(out, forwardTree, rng);
+        for (unsigned int i = 0; i < objects; ++i)
+            chooseFixedValue(out, 1 + i, rng);
+    }
+}  // namespace ompl_mm

@@ -1,0 +1,58 @@
+/* Builds primitives from the <primitives> section of a scene. Each type name maps to a builder;
+   applications and users can register their own primitive types next to the built-in ones
+   ("transit", "push_mobile"). */
+#pragma once
+
+#include "ompl_mm/primitives/Primitive.h"
+#include "ompl_mm/scene/Scene.h"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ompl_mm
+{
+    /** Reads a primitive's parameters, reporting faults at the primitive's scene line. */
+    class PrimitiveParameters
+    {
+    public:
+        explicit PrimitiveParameters(const PrimitiveSpec &spec);
+
+        /** The value of a parameter; `fallback` when absent.
+            @throws InputError when present but not a finite number. */
+        double number(const std::string &name, double fallback) const;
+        /** The value of a required parameter. @throws InputError when absent or malformed. */
+        double number(const std::string &name) const;
+        /** @throws InputError naming the first parameter that no number() call asked for. */
+        void rejectUnread() const;
+
+        const PrimitiveSpec &spec() const { return spec_; }
+
+    private:
+        const PrimitiveSpec &spec_;
+        mutable std::vector<std::string> read_;
+    };
+
+    class PrimitiveFactory
+    {
+    public:
+        using Builder =
+            std::function<PrimitivePtr(const ManipulationStateSpace *, const PrimitiveParameters &)>;
+
+        /** A factory that knows the built-in primitive types. */
+        PrimitiveFactory();
+
+        /** Adds or replaces a primitive type. */
+        void registerType(const std::string &type, Builder builder);
+
+        /** Builds one primitive per spec.
+            @throws InputError at the spec's scene line for an unknown type, an unknown or bad
+            parameter, or a primitive that does not fit the robot. */
+        std::vector<PrimitivePtr> build(const std::vector<PrimitiveSpec> &specs,
+                                        const ManipulationStateSpace *space) const;
+
+    private:
+        std::map<std::string, Builder> builders_;
+    };
+}  // namespace ompl_mm

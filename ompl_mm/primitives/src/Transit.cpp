@@ -1,0 +1,24 @@
+#include "ompl_mm/primitives/Transit.h"
+
+namespace ompl_mm
+{
+    Transit::Transit(const ManipulationStateSpace *space)
+        : Primitive(space, "transit", PrimitiveKind::Transit)
+    {
+    }
+
+    bool Transit::isUseful(const ompl::base::State *from, const ompl::base::State *to) const
+    {
+        return space_->robotMoves(from, to) && !anyObjectMoves(from, to) && allObjectsRest(from);
+    }
+
+    bool Transit::propagate(const ompl::base::State *from, const ompl::base::State *to,
+                            Trajectory &trajectory) const
+    {
+        ompl::base::State *next = space_->cloneState(from);
+        space_->copyRobot(next, to);
+        trajectory.append(next, {PrimitiveKind::Transit, -1});
+        space_->freeState(next);
+        return true;
+    }
+}  // namespace ompl_mm

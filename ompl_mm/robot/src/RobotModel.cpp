@@ -1,0 +1,330 @@
+/* RobotModel: urdfdom parses the URDF; a tinyxml2 pass beforehand finds element lines (which urdfdom
+   drops) for messages and the file order of joints; the tree is then flattened parents first. */
+#include "ompl_mm/robot/RobotModel.h"
+
+#include <tinyxml2.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <algorithm>
+#include <boost/math/constants/constants.hpp>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <tuple>
+#include <utility>
+
+#include "ompl_mm/scene/InputError.h"
+
+namespace ompl_mm
+{
+    namespace
+    {
+        /** The URDF's name for messages and the line of each link and joint element. */
+        struct UrdfSource
+        {
+            std::string name;
+            std::map<std::string, int> linkLines;
+            std::map<std::string, int> jointLines;
+
+            int jointLine(const std::string &joint) const
+            {
+                auto it = jointLines.find(joint);
+                return it == jointLines.end() ? 0 : it->second;
+            }
+
+            InputError linkError(const std::string &link, const std::string &message) const
+            {
+                auto it = linkLines.find(link);
+                return InputError(SourceLocation{name, it == linkLines.end() ? 0 : it->second},
+                                  "link '" + link + "': " + message);
+            }
+
+            InputError jointError(const std::string &joint, const std::string &message) const
+            {
+                return InputError(SourceLocation{name, jointLine(joint)},
+                                  "joint '" + joint + "': " + message);
+            }
+        };
+
+        std::string format(double value)
+        {
+            std::ostringstream out;
+            out << value;
+            return out.str();
+        }
+
+        /** Checks the XML and indexes elements; also catches moving joints without <limit>, which
+            urdfdom rejects without saying which joint. */
+        UrdfSource indexElements(const std::string &urdf, const std::string &sourceName)
+        {
+            UrdfSource source{sourceName, {}, {}};
+            tinyxml2::XMLDocument doc;
+            if (doc.Parse(urdf.c_str(), urdf.size()) != tinyxml2::XML_SUCCESS)
+                throw InputError(SourceLocation{sourceName, doc.ErrorLineNum()},
+                                 std::string("invalid URDF: malformed XML (") + doc.ErrorName() + ")");
+            const tinyxml2::XMLElement *robot = doc.FirstChildElement("robot");
+            if (robot == nullptr)
+                throw InputError(SourceLocation{sourceName, 0}, "invalid URDF: no <robot> element");
+            for (auto *e = robot->FirstChildElement("link"); e != nullptr; e = e->NextSiblingElement("link"))
+                if (const char *name = e->Attribute("name"))
+                    source.linkLines.emplace(name, e->GetLineNum());
+            for (auto *e = robot->FirstChildElement("joint"); e != nullptr;
+                 e = e->NextSiblingElement("joint"))
+            {
+                const char *name = e->Attribute("name");
+                if (name == nullptr)
+                    continue;  // urdfdom reports it
+                source.jointLines.emplace(name, e->GetLineNum());
+                const std::string type = e->Attribute("type") != nullptr ? e->Attribute("type") : "";
+                if ((type == "revolute" || type == "prismatic") && e->FirstChildElement("limit") == nullptr)
+                    throw source.jointError(name, type + " joint has no <limit>");
+            }
+            return source;
+        }
+
+        Eigen::Isometry3d toIsometry(const urdf::Pose &pose)
+        {
+            Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
+            frame.translation() = Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z);
+            const urdf::Rotation &r = pose.rotation;
+            frame.linear() = Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized().toRotationMatrix();
+            return frame;
+        }
+
+        Shape toShape(const urdf::Geometry &geometry, const std::string &link, const UrdfSource &source)
+        {
+            Shape shape;
+            switch (geometry.type)
+            {
+                case urdf::Geometry::BOX:
+                {
+                    const urdf::Vector3 &d = static_cast<const urdf::Box &>(geometry).dim;
+                    shape.kind = Shape::Kind::Box;
+                    shape.boxSize = Eigen::Vector3d(d.x, d.y, d.z);
+                    if (!(shape.boxSize.minCoeff() > 0.0))
+                        throw source.linkError(link, "box size must be positive, got " + format(d.x) + " " +
+                                                         format(d.y) + " " + format(d.z));
+                    return shape;
+                }
+                case urdf::Geometry::CYLINDER:
+                {
+                    const auto &cylinder = static_cast<const urdf::Cylinder &>(geometry);
+                    shape.kind = Shape::Kind::Cylinder;
+                    shape.radius = cylinder.radius;
+                    shape.length = cylinder.length;
+                    if (!(shape.radius > 0.0 && shape.length > 0.0))
+                        throw source.linkError(link, "cylinder radius and length must be positive, got " +
+                                                         format(shape.radius) + " and " +
+                                                         format(shape.length));
+                    return shape;
+                }
+                case urdf::Geometry::SPHERE:
+                    shape.kind = Shape::Kind::Sphere;
+                    shape.radius = static_cast<const urdf::Sphere &>(geometry).radius;
+                    if (!(shape.radius > 0.0))
+                        throw source.linkError(link,
+                                               "sphere radius must be positive, got " + format(shape.radius));
+                    return shape;
+                default:
+                    throw source.linkError(
+                        link, "mesh collision geometry is not supported; use box, cylinder or sphere");
+            }
+        }
+
+        std::vector<LinkShape> toLinkShapes(const urdf::Link &link, const UrdfSource &source)
+        {
+            std::vector<LinkShape> shapes;
+            for (const urdf::CollisionSharedPtr &collision : link.collision_array)
+                shapes.push_back(LinkShape{toShape(*collision->geometry, link.name, source),
+                                           toIsometry(collision->origin)});
+            return shapes;
+        }
+
+        Joint::Type toJointType(const urdf::Joint &joint, const UrdfSource &source)
+        {
+            switch (joint.type)
+            {
+                case urdf::Joint::FIXED:
+                    return Joint::Type::Fixed;
+                case urdf::Joint::PRISMATIC:
+                    return Joint::Type::Prismatic;
+                case urdf::Joint::REVOLUTE:
+                    return Joint::Type::Revolute;
+                case urdf::Joint::CONTINUOUS:
+                    return Joint::Type::Continuous;
+                default:
+                {
+                    // urdfdom itself rejects unknown type names
+                    const std::string type = joint.type == urdf::Joint::FLOATING ? "floating" : "planar";
+                    throw source.jointError(joint.name,
+                                            type +
+                                                " joints are not supported; use fixed, prismatic, "
+                                                "revolute or continuous");
+                }
+            }
+        }
+
+        Joint toJoint(const urdf::Joint &urdfJoint, const UrdfSource &source)
+        {
+            Joint joint;
+            joint.name = urdfJoint.name;
+            joint.type = toJointType(urdfJoint, source);
+            joint.origin = toIsometry(urdfJoint.parent_to_joint_origin_transform);
+            if (joint.type == Joint::Type::Fixed)
+                return joint;
+
+            const Eigen::Vector3d axis(urdfJoint.axis.x, urdfJoint.axis.y, urdfJoint.axis.z);
+            if (!(axis.norm() > 0.0) || !axis.allFinite())
+                throw source.jointError(joint.name, "axis must be a non-zero vector");
+            joint.axis = axis.normalized();
+
+            if (joint.type == Joint::Type::Continuous)
+            {
+                joint.lower = -boost::math::constants::pi<double>();
+                joint.upper = boost::math::constants::pi<double>();
+                return joint;
+            }
+            // urdfdom guarantees limits on prismatic and revolute joints
+            joint.lower = urdfJoint.limits->lower;
+            joint.upper = urdfJoint.limits->upper;
+            if (!(joint.lower < joint.upper))
+                throw source.jointError(joint.name, "lower limit " + format(joint.lower) +
+                                                        " must be below upper limit " + format(joint.upper));
+            return joint;
+        }
+
+        /** Child joints in file order (urdfdom orders them by name), so the variables of a branch
+            follow the order the author wrote. */
+        std::vector<urdf::JointSharedPtr> childJointsInFileOrder(const urdf::Link &link,
+                                                                 const UrdfSource &source)
+        {
+            std::vector<urdf::JointSharedPtr> joints = link.child_joints;
+            std::stable_sort(joints.begin(), joints.end(),
+                             [&source](const urdf::JointSharedPtr &a, const urdf::JointSharedPtr &b)
+                             { return source.jointLine(a->name) < source.jointLine(b->name); });
+            return joints;
+        }
+
+        /** Frame of a joint's child in its parent's frame for joint values q. */
+        Eigen::Isometry3d jointTransform(const Joint &joint, const double *q)
+        {
+            Eigen::Isometry3d transform = joint.origin;
+            switch (joint.type)
+            {
+                case Joint::Type::Fixed:
+                    break;
+                case Joint::Type::Prismatic:
+                    transform.translate(joint.axis * q[joint.variable]);
+                    break;
+                case Joint::Type::Revolute:
+                case Joint::Type::Continuous:
+                    transform.rotate(Eigen::AngleAxisd(q[joint.variable], joint.axis));
+                    break;
+            }
+            return transform;
+        }
+
+        void checkLinkIndex(int link, std::size_t count)
+        {
+            if (link < 0 || static_cast<std::size_t>(link) >= count)
+                throw ompl::Exception("RobotModel: link index " + std::to_string(link) +
+                                      " out of range [0, " + std::to_string(count) + ")");
+        }
+    }  // namespace
+
+    RobotModel RobotModel::fromUrdfFile(const std::string &path)
+    {
+        std::ifstream in(path);
+        if (!in)
+            throw InputError(SourceLocation{path, 0}, "cannot read URDF file");
+        std::ostringstream text;
+        text << in.rdbuf();
+        return fromUrdfString(text.str(), path);
+    }
+
+    RobotModel RobotModel::fromUrdfString(const std::string &urdf, const std::string &sourceName)
+    {
+        const UrdfSource source = indexElements(urdf, sourceName);
+        urdf::ModelInterfaceSharedPtr model;
+        try
+        {
+            model = urdf::parseURDF(urdf);
+        }
+        catch (const std::exception &e)
+        {
+            throw InputError(SourceLocation{sourceName, 0}, std::string("invalid URDF: ") + e.what());
+        }
+        if (!model || !model->getRoot())
+            throw InputError(SourceLocation{sourceName, 0}, "invalid URDF");
+
+        RobotModel robot;
+        robot.name_ = model->getName();
+        // depth first from the root, so each branch's variables are contiguous; entries are a link,
+        // its parent's index and the joint from the parent (null for the root)
+        std::vector<std::tuple<urdf::LinkConstSharedPtr, int, urdf::JointConstSharedPtr>> stack{
+            {model->getRoot(), -1, nullptr}};
+        while (!stack.empty())
+        {
+            auto [urdfLink, parent, urdfJoint] = stack.back();
+            stack.pop_back();
+            Link link{urdfLink->name, parent, -1, toLinkShapes(*urdfLink, source)};
+            if (urdfJoint)
+            {
+                Joint joint = toJoint(*urdfJoint, source);
+                if (joint.type != Joint::Type::Fixed)
+                {
+                    joint.variable = static_cast<int>(robot.dof_++);
+                    robot.variableJoints_.push_back(static_cast<int>(robot.joints_.size()));
+                }
+                link.joint = static_cast<int>(robot.joints_.size());
+                robot.joints_.push_back(std::move(joint));
+            }
+            const int index = static_cast<int>(robot.links_.size());
+            robot.links_.push_back(std::move(link));
+            // pushed in reverse so the first child in the file is visited first
+            const std::vector<urdf::JointSharedPtr> children = childJointsInFileOrder(*urdfLink, source);
+            for (auto it = children.rbegin(); it != children.rend(); ++it)
+                stack.emplace_back(model->getLink((*it)->child_link_name), index, *it);
+        }
+        return robot;
+    }
+
+    int RobotModel::linkIndex(const std::string &name) const
+    {
+        for (std::size_t i = 0; i < links_.size(); ++i)
+            if (links_[i].name == name)
+                return static_cast<int>(i);
+        throw InputError("robot '" + name_ + "' has no link '" + name + "'");
+    }
+
+    bool RobotModel::isInSubtree(int descendant, int ancestor) const
+    {
+        checkLinkIndex(descendant, links_.size());
+        checkLinkIndex(ancestor, links_.size());
+        for (int i = descendant; i >= 0; i = links_[i].parent)
+            if (i == ancestor)
+                return true;
+        return false;
+    }
+
+    void RobotModel::forwardKinematics(const double *q, const Eigen::Isometry3d &base,
+                                       std::vector<Eigen::Isometry3d> &frames) const
+    {
+        frames.resize(links_.size());
+        // the root is link 0 and every parent comes before its children
+        frames[0] = base;
+        for (std::size_t i = 1; i < links_.size(); ++i)
+            frames[i] = frames[links_[i].parent] * jointTransform(joints_[links_[i].joint], q);
+    }
+
+    Eigen::Isometry3d RobotModel::linkFrame(const double *q, const Eigen::Isometry3d &base, int link) const
+    {
+        checkLinkIndex(link, links_.size());
+        // multiplying on the left while walking up needs no stack of the path
+        Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
+        for (int i = link; links_[i].parent >= 0; i = links_[i].parent)
+            frame = jointTransform(joints_[links_[i].joint], q) * frame;
+        return base * frame;
+    }
+}  // namespace ompl_mm

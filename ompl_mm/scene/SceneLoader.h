@@ -1,0 +1,20 @@
+/* Reads a scene file (XML, see docs/scene-format.md) into a Scene. Every error names the file
+   and line: unknown elements or attributes, missing or malformed values, duplicate or unknown
+   names, missing files. Checks that need the robot model or collision geometry (joint counts,
+   start in collision) are made by ManipulationSetup, which reports the same locations. */
+#pragma once
+
+#include "ompl_mm/scene/Scene.h"
+
+#include <string>
+
+namespace ompl_mm
+{
+    /** Loads a scene file; relative paths inside it (the URDF) are relative to the file.
+        @throws InputError with "file:line: message" on any fault. */
+    Scene loadScene(const std::string &path);
+
+    /** Parses scene XML text; sourceName names it in messages and baseDir resolves relative paths.
+        @throws InputError with "sourceName:line: message" on any fault. */
+    Scene parseScene(const std::string &xml, const std::string &sourceName, const std::string &baseDir);
+}  // namespace ompl_mm

@@ -1,0 +1,127 @@
+/* Reading values from the elements of an XML file so that every error names file:line: allowed
+   attributes and children, finite numbers, angles with an optional "deg" suffix, fixed-length
+   vectors and "*" (don't care) coordinates. Used by SceneLoader; independent of the scene. */
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ompl_mm/scene/Scene.h"
+
+namespace tinyxml2
+{
+    class XMLElement;
+}
+
+namespace ompl_mm
+{
+    /** A finite decimal number filling the whole token ("1", "-0.5", "+2e-3"), else nothing.
+        Independent of the C locale. */
+    std::optional<double> parseNumber(std::string_view token);
+
+    /** A number in radians, or in degrees when followed by "deg" ("90deg"), converted to radians. */
+    std::optional<double> parseAngle(std::string_view token);
+
+    /** A readable description of a tinyxml2 syntax error, e.g. "end tag missing or mismatched for <a>". */
+    std::string describeXmlError(int errorId, const std::string &errorStr);
+
+    /** One element of an XML document with the file it came from, for located errors.
+        A cheap, copyable view: the document must outlive it. All readers throw InputError naming
+        the file and the line of the element or attribute. */
+    class XmlElement
+    {
+    public:
+        XmlElement(const tinyxml2::XMLElement *element, std::string file);
+
+        /** The element's tag name, e.g. "box". */
+        std::string name() const;
+
+        /** The tag in angle brackets for messages, e.g. "<box>". */
+        std::string tag() const;
+
+        /** File and line of the element's start tag. */
+        SourceLocation where() const;
+
+        /** File and line of the attribute, or of the element when it is absent. */
+        SourceLocation where(const char *attribute) const;
+
+        /** @throws InputError at the element's line with message. */
+        [[noreturn]] void fail(const std::string &message) const;
+
+        /** @throws InputError at the attribute's line with message. */
+        [[noreturn]] void fail(const char *attribute, const std::string &message) const;
+
+        /** @throws InputError for the first attribute not in allowed. */
+        void checkAttributes(std::initializer_list<const char *> allowed) const;
+
+        /** All attributes in document order, as (name, value). */
+        std::vector<std::pair<std::string, std::string>> attributes() const;
+
+        /** Child elements in document order.
+            @throws InputError for a child whose name is not in allowed, or for non-blank text. */
+        std::vector<XmlElement> children(std::initializer_list<const char *> allowed) const;
+
+        /** Child elements in document order, any names. @throws InputError for non-blank text. */
+        std::vector<XmlElement> children() const;
+
+        bool has(const char *attribute) const;
+
+        /** The attribute's text. @throws InputError when it is missing or empty. */
+        std::string text(const char *attribute) const;
+        std::string text(const char *attribute, const std::string &fallback) const;
+
+        /** One finite number. @throws InputError when missing (first form) or malformed. */
+        double number(const char *attribute) const;
+        double number(const char *attribute, double fallback) const;
+
+        /** One number > 0. */
+        double positive(const char *attribute) const;
+
+        /** One number >= 0, or fallback when absent. */
+        double nonNegative(const char *attribute, double fallback) const;
+
+        /** One angle >= 0 (radians, or degrees with "deg"), or fallback when absent. */
+        double nonNegativeAngle(const char *attribute, double fallback) const;
+
+        /** One angle (radians, or degrees with "deg"), or fallback when absent. */
+        double angle(const char *attribute, double fallback) const;
+
+        /** One angle or "*" (nullopt), or fallback when absent. */
+        GoalCoordinate angleOrAny(const char *attribute, GoalCoordinate fallback) const;
+
+        /** Whitespace-separated finite numbers; count 0 means any count >= 1. */
+        std::vector<double> numbers(const char *attribute, std::size_t count) const;
+
+        /** As numbers(), each entry may also be "*" (nullopt). */
+        std::vector<GoalCoordinate> coordinates(const char *attribute, std::size_t count) const;
+
+        Eigen::Vector2d vector2(const char *attribute) const;
+        Eigen::Vector3d vector3(const char *attribute) const;
+        Eigen::Vector3d vector3(const char *attribute, const Eigen::Vector3d &fallback) const;
+
+        /** Three numbers, each > 0. */
+        Eigen::Vector3d positiveVector3(const char *attribute) const;
+
+        /** Three angles (radians, or degrees with "deg"), or fallback when absent. */
+        Eigen::Vector3d angles3(const char *attribute, const Eigen::Vector3d &fallback) const;
+
+    private:
+        /** The attribute's value, or nullptr when absent. */
+        const char *value(const char *attribute) const;
+
+        /** The attribute's value. @throws InputError when absent. */
+        const char *required(const char *attribute) const;
+
+        /** The tokens of the attribute, each parsed as a number or angle, "*" allowed or not. */
+        std::vector<GoalCoordinate> read(const char *attribute, std::size_t count, bool angles,
+                                         bool allowAny) const;
+
+        const tinyxml2::XMLElement *element_;
+        std::string file_;
+    };
+}  // namespace ompl_mm

@@ -1,0 +1,23 @@
+#include "ompl_mm/scene/InputError.h"
+
+namespace ompl_mm
+{
+    namespace
+    {
+        std::string located(const SourceLocation &where, const std::string &message)
+        {
+            if (where.file.empty())
+                return message;
+            if (where.line <= 0)
+                return where.file + ": " + message;
+            return where.str() + ": " + message;
+        }
+    }  // namespace
+
+    InputError::InputError(const SourceLocation &where, const std::string &message)
+        : ompl::Exception(located(where, message))
+    {
+    }
+
+    InputError::InputError(const std::string &message) : ompl::Exception(message) {}
+}  // namespace ompl_mm

@@ -1,0 +1,347 @@
+#include "ompl_mm/scene/XmlReading.h"
+
+#include <tinyxml2.h>
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+#include <utility>
+
+#include "ompl_mm/scene/InputError.h"
+
+namespace ompl_mm
+{
+    namespace
+    {
+        constexpr std::string_view DEGREE_SUFFIX = "deg";
+        constexpr double RADIANS_PER_DEGREE = 3.14159265358979323846 / 180.0;
+
+        std::vector<std::string> splitWhitespace(const char *text)
+        {
+            std::vector<std::string> tokens;
+            std::istringstream in(text);
+            std::string token;
+            while (in >> token)
+                tokens.push_back(token);
+            return tokens;
+        }
+
+        std::string joinNames(std::initializer_list<const char *> names)
+        {
+            std::string joined;
+            for (const char *name : names)
+                joined += (joined.empty() ? "" : ", ") + std::string(name);
+            return joined.empty() ? "none" : joined;
+        }
+
+        bool isListed(const char *name, std::initializer_list<const char *> names)
+        {
+            for (const char *listed : names)
+                if (std::string_view(listed) == name)
+                    return true;
+            return false;
+        }
+
+        bool isBlank(const char *text)
+        {
+            return std::string(text).find_first_not_of(" \t\r\n") == std::string::npos;
+        }
+    }  // namespace
+
+    std::optional<double> parseNumber(std::string_view token)
+    {
+        // from_chars rejects a leading '+', which users reasonably write
+        if (token.size() > 1 && token[0] == '+' && token[1] != '+' && token[1] != '-')
+            token.remove_prefix(1);
+        double value = 0.0;
+        const char *end = token.data() + token.size();
+        const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+        if (ec != std::errc() || ptr != end || !std::isfinite(value))
+            return std::nullopt;
+        return value;
+    }
+
+    std::optional<double> parseAngle(std::string_view token)
+    {
+        if (token.size() > DEGREE_SUFFIX.size() &&
+            token.substr(token.size() - DEGREE_SUFFIX.size()) == DEGREE_SUFFIX)
+        {
+            const std::optional<double> degrees =
+                parseNumber(token.substr(0, token.size() - DEGREE_SUFFIX.size()));
+            if (!degrees)
+                return std::nullopt;
+            return *degrees * RADIANS_PER_DEGREE;
+        }
+        return parseNumber(token);
+    }
+
+    std::string describeXmlError(int errorId, const std::string &errorStr)
+    {
+        std::string description;
+        switch (static_cast<tinyxml2::XMLError>(errorId))
+        {
+            case tinyxml2::XML_ERROR_EMPTY_DOCUMENT:
+                return "the document is empty";
+            case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
+                description = "end tag missing or mismatched";
+                break;
+            case tinyxml2::XML_ERROR_PARSING_ELEMENT:
+                description = "malformed element tag";
+                break;
+            case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
+                description = "malformed attribute (unquoted value, or an attribute given twice)";
+                break;
+            case tinyxml2::XML_ERROR_PARSING_TEXT:
+                description = "malformed text (a stray '<' or '&', or text outside the root element)";
+                break;
+            case tinyxml2::XML_ERROR_PARSING_COMMENT:
+                description = "unterminated comment";
+                break;
+            case tinyxml2::XML_ERROR_PARSING_CDATA:
+                description = "unterminated CDATA section";
+                break;
+            case tinyxml2::XML_ERROR_PARSING_DECLARATION:
+                description = "malformed <?...?> declaration";
+                break;
+            default:
+                description = "syntax error";
+        }
+        // tinyxml2 ends some messages with "XMLElement name=<tag>": name the element
+        const std::string marker = "name=";
+        const std::size_t at = errorStr.rfind(marker);
+        if (at != std::string::npos)
+            description += " for <" + errorStr.substr(at + marker.size()) + ">";
+        return description;
+    }
+
+    XmlElement::XmlElement(const tinyxml2::XMLElement *element, std::string file)
+        : element_(element), file_(std::move(file))
+    {
+    }
+
+    std::string XmlElement::name() const
+    {
+        return element_->Name();
+    }
+
+    std::string XmlElement::tag() const
+    {
+        return "<" + name() + ">";
+    }
+
+    SourceLocation XmlElement::where() const
+    {
+        return SourceLocation{file_, element_->GetLineNum()};
+    }
+
+    SourceLocation XmlElement::where(const char *attribute) const
+    {
+        const tinyxml2::XMLAttribute *found = element_->FindAttribute(attribute);
+        return found ? SourceLocation{file_, found->GetLineNum()} : where();
+    }
+
+    void XmlElement::fail(const std::string &message) const
+    {
+        throw InputError(where(), message);
+    }
+
+    void XmlElement::fail(const char *attribute, const std::string &message) const
+    {
+        throw InputError(where(attribute), message);
+    }
+
+    void XmlElement::checkAttributes(std::initializer_list<const char *> allowed) const
+    {
+        for (const tinyxml2::XMLAttribute *a = element_->FirstAttribute(); a; a = a->Next())
+            if (!isListed(a->Name(), allowed))
+                fail(a->Name(), "unknown attribute '" + std::string(a->Name()) + "' on " + tag() +
+                                    " (allowed: " + joinNames(allowed) + ")");
+    }
+
+    std::vector<std::pair<std::string, std::string>> XmlElement::attributes() const
+    {
+        std::vector<std::pair<std::string, std::string>> all;
+        for (const tinyxml2::XMLAttribute *a = element_->FirstAttribute(); a; a = a->Next())
+            all.emplace_back(a->Name(), a->Value());
+        return all;
+    }
+
+    std::vector<XmlElement> XmlElement::children(std::initializer_list<const char *> allowed) const
+    {
+        std::vector<XmlElement> found = children();
+        for (const XmlElement &child : found)
+            if (!isListed(child.name().c_str(), allowed))
+                child.fail("unknown element " + child.tag() + " in " + tag() +
+                           " (allowed: " + joinNames(allowed) + ")");
+        return found;
+    }
+
+    std::vector<XmlElement> XmlElement::children() const
+    {
+        std::vector<XmlElement> found;
+        for (const tinyxml2::XMLNode *node = element_->FirstChild(); node; node = node->NextSibling())
+        {
+            if (const tinyxml2::XMLElement *child = node->ToElement())
+                found.emplace_back(child, file_);
+            else if (node->ToText() && !isBlank(node->Value()))
+                throw InputError(SourceLocation{file_, node->GetLineNum()},
+                                 "unexpected text in " + tag() + " (values go in attributes)");
+        }
+        return found;
+    }
+
+    bool XmlElement::has(const char *attribute) const
+    {
+        return value(attribute) != nullptr;
+    }
+
+    std::string XmlElement::text(const char *attribute) const
+    {
+        const std::string found = required(attribute);
+        if (found.empty())
+            fail(attribute, "attribute '" + std::string(attribute) + "' of " + tag() + " must not be empty");
+        return found;
+    }
+
+    std::string XmlElement::text(const char *attribute, const std::string &fallback) const
+    {
+        return has(attribute) ? text(attribute) : fallback;
+    }
+
+    double XmlElement::number(const char *attribute) const
+    {
+        return *read(attribute, 1, false, false).front();
+    }
+
+    double XmlElement::number(const char *attribute, double fallback) const
+    {
+        return has(attribute) ? number(attribute) : fallback;
+    }
+
+    double XmlElement::positive(const char *attribute) const
+    {
+        const double found = number(attribute);
+        if (found <= 0.0)
+            fail(attribute, "attribute '" + std::string(attribute) + "' of " + tag() +
+                                " must be positive, got " + required(attribute));
+        return found;
+    }
+
+    double XmlElement::nonNegative(const char *attribute, double fallback) const
+    {
+        const double found = number(attribute, fallback);
+        if (found < 0.0)
+            fail(attribute, "attribute '" + std::string(attribute) + "' of " + tag() +
+                                " must not be negative, got " + required(attribute));
+        return found;
+    }
+
+    double XmlElement::nonNegativeAngle(const char *attribute, double fallback) const
+    {
+        const double found = angle(attribute, fallback);
+        if (found < 0.0)
+            fail(attribute, "attribute '" + std::string(attribute) + "' of " + tag() +
+                                " must not be negative, got " + required(attribute));
+        return found;
+    }
+
+    double XmlElement::angle(const char *attribute, double fallback) const
+    {
+        return has(attribute) ? *read(attribute, 1, true, false).front() : fallback;
+    }
+
+    GoalCoordinate XmlElement::angleOrAny(const char *attribute, GoalCoordinate fallback) const
+    {
+        return has(attribute) ? read(attribute, 1, true, true).front() : fallback;
+    }
+
+    std::vector<double> XmlElement::numbers(const char *attribute, std::size_t count) const
+    {
+        std::vector<double> values;
+        for (const GoalCoordinate &value : read(attribute, count, false, false))
+            values.push_back(*value);
+        return values;
+    }
+
+    std::vector<GoalCoordinate> XmlElement::coordinates(const char *attribute, std::size_t count) const
+    {
+        return read(attribute, count, false, true);
+    }
+
+    Eigen::Vector2d XmlElement::vector2(const char *attribute) const
+    {
+        const std::vector<double> values = numbers(attribute, 2);
+        return Eigen::Vector2d(values[0], values[1]);
+    }
+
+    Eigen::Vector3d XmlElement::vector3(const char *attribute) const
+    {
+        const std::vector<double> values = numbers(attribute, 3);
+        return Eigen::Vector3d(values[0], values[1], values[2]);
+    }
+
+    Eigen::Vector3d XmlElement::vector3(const char *attribute, const Eigen::Vector3d &fallback) const
+    {
+        return has(attribute) ? vector3(attribute) : fallback;
+    }
+
+    Eigen::Vector3d XmlElement::positiveVector3(const char *attribute) const
+    {
+        const Eigen::Vector3d found = vector3(attribute);
+        if ((found.array() <= 0.0).any())
+            fail(attribute, "attribute '" + std::string(attribute) + "' of " + tag() +
+                                " must be positive in every component, got '" + required(attribute) + "'");
+        return found;
+    }
+
+    Eigen::Vector3d XmlElement::angles3(const char *attribute, const Eigen::Vector3d &fallback) const
+    {
+        if (!has(attribute))
+            return fallback;
+        const std::vector<GoalCoordinate> values = read(attribute, 3, true, false);
+        return Eigen::Vector3d(*values[0], *values[1], *values[2]);
+    }
+
+    const char *XmlElement::value(const char *attribute) const
+    {
+        return element_->Attribute(attribute);
+    }
+
+    const char *XmlElement::required(const char *attribute) const
+    {
+        const char *found = value(attribute);
+        if (!found)
+            fail("missing required attribute '" + std::string(attribute) + "' on " + tag());
+        return found;
+    }
+
+    std::vector<GoalCoordinate> XmlElement::read(const char *attribute, std::size_t count, bool angles,
+                                                 bool allowAny) const
+    {
+        const std::vector<std::string> tokens = splitWhitespace(required(attribute));
+        const std::string what = "attribute '" + std::string(attribute) + "' of " + tag();
+        if (tokens.empty() || (count > 0 && tokens.size() != count))
+            fail(attribute, what + " needs " + (count > 0 ? std::to_string(count) : "at least 1") + " value" +
+                                (count == 1 ? "" : "s") + ", got " + std::to_string(tokens.size()));
+        std::vector<GoalCoordinate> values;
+        for (const std::string &token : tokens)
+        {
+            if (token == "*")
+            {
+                if (!allowAny)
+                    fail(attribute,
+                         "'*' (don't care) is not allowed in " + what + "; it is allowed only in <goal>");
+                values.emplace_back(std::nullopt);
+                continue;
+            }
+            const std::optional<double> parsed = angles ? parseAngle(token) : parseNumber(token);
+            if (!parsed)
+                fail(attribute,
+                     "malformed number '" + token + "' in " + what +
+                         (angles ? ": expected a finite number of radians, or degrees as in '90deg'"
+                                 : ": expected a finite decimal number"));
+            values.emplace_back(parsed);
+        }
+        return values;
+    }
+}  // namespace ompl_mm

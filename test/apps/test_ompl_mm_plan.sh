@@ -1,0 +1,284 @@
+#!/usr/bin/env bash
+# Tests for the ompl_mm_plan command-line contract (docs/DESIGN "Apps and their contracts"): exit 0
+# solved, 1 not solved, 2 bad input naming file:line; the JSON, SVG and path outputs; determinism.
+# Usage: test_ompl_mm_plan.sh PATH/TO/ompl_mm_plan SCENES_DIR SCRATCH_DIR
+# Prints "ok - name" / "not ok - name" per check and ends with "N passed, M failed".
+set -u
+
+if [ $# -ne 3 ]; then
+    echo "usage: $0 OMPL_MM_PLAN SCENES_DIR SCRATCH_DIR" >&2
+    exit 2
+fi
+plan=$1
+scenes=$2
+scratch=$3
+base=mobile_blocked.xml
+
+# every run is bounded, so a hang fails the check instead of the whole test
+run_limit=300
+
+passed=0
+failed=0
+ok() {
+    echo "ok - $1"
+    passed=$((passed + 1))
+}
+not_ok() {
+    echo "not ok - $1"
+    shift
+    local line
+    for line in "$@"; do
+        printf '%s\n' "$line" | sed 's/^/#   /'
+    done
+    failed=$((failed + 1))
+}
+
+# run NAME ARGS...: runs ompl_mm_plan with stdout/stderr in $scratch/NAME.{out,err}; sets $status
+run() {
+    local name=$1
+    shift
+    out=$scratch/$name.out
+    err=$scratch/$name.err
+    timeout "$run_limit" "$plan" "$@" >"$out" 2>"$err"
+    status=$?
+}
+
+# show the last command's output in a failure report
+outputs() {
+    echo "stdout: $(head -c 600 "$out")"
+    echo "stderr: $(head -c 600 "$err")"
+}
+
+# make_scene NAME: copies the base scene to $scratch/scenes/NAME.xml (robots/ is beside it) and
+# prints the copy's path
+make_scene() {
+    cp "$scenes/$base" "$scratch/scenes/$1.xml" && echo "$scratch/scenes/$1.xml"
+}
+
+# edit FILE OLD NEW: replaces the one occurrence of OLD in FILE by NEW ("\n" in NEW is a newline)
+edit() {
+    python3 - "$@" <<'PY'
+import sys
+path, old, new = sys.argv[1], sys.argv[2], sys.argv[3].replace("\\n", "\n")
+text = open(path).read()
+if text.count(old) != 1:
+    sys.exit(f"edit: '{old}' occurs {text.count(old)} times in {path}, expected once")
+open(path, "w").write(text.replace(old, new))
+PY
+}
+
+# line_of FILE TEXT: the number of the first line of FILE containing TEXT
+line_of() {
+    grep -n -F -- "$2" "$1" | head -n 1 | cut -d: -f1
+}
+
+# expect_bad NAME SCENE LINE TEXT ARGS...: ompl_mm_plan exits 2 and stderr names "scene:LINE:"
+# (LINE "-": just the scene's file name) and contains TEXT; ARGS are passed after SCENE
+expect_bad() {
+    local name=$1 scene=$2 line=$3 text=$4
+    shift 4
+    if [ -z "$line" ]; then
+        not_ok "bad input: $name" "could not generate the scene $scene (edit failed)"
+        return
+    fi
+    run bad "$scene" --time-limit 2 "$@"
+    local where
+    where=$(basename "$scene")
+    [ "$line" != "-" ] && where="$where:$line:"
+    if [ $status -ne 2 ]; then
+        not_ok "bad input: $name" "command: $plan $scene --time-limit 2 $*" "expected exit 2, got $status" "$(outputs)"
+    elif ! grep -q -F -- "$where" "$err"; then
+        not_ok "bad input: $name" "command: $plan $scene --time-limit 2 $*" "stderr does not name '$where'" "$(outputs)"
+    elif ! grep -q -i -F -- "$text" "$err"; then
+        not_ok "bad input: $name" "command: $plan $scene --time-limit 2 $*" "stderr does not mention '$text'" "$(outputs)"
+    else
+        ok "bad input: $name"
+    fi
+}
+
+# expect_bad_option NAME TEXT ARGS...: a bad command line exits 2 with TEXT on stderr
+expect_bad_option() {
+    local name=$1 text=$2
+    shift 2
+    run bad "$@"
+    if [ $status -ne 2 ]; then
+        not_ok "bad input: $name" "command: $plan $*" "expected exit 2, got $status" "$(outputs)"
+    elif ! grep -q -F -- "$text" "$err"; then
+        not_ok "bad input: $name" "command: $plan $*" "stderr does not mention '$text'" "$(outputs)"
+    else
+        ok "bad input: $name"
+    fi
+}
+
+rm -rf "$scratch"
+mkdir -p "$scratch/scenes" || exit 2
+cp -r "$scenes/robots" "$scratch/scenes/" || exit 2
+# run from elsewhere, so the URDF path must be resolved relative to the scene file
+cd "$scratch" || exit 2
+scene=$scenes/$base
+
+# --- 1. a solved run and its outputs ------------------------------------------------------------
+json=$scratch/solved.json
+svg=$scratch/solved.svg
+path1=$scratch/solved1.txt
+run solve1 "$scene" --seed 1 --json "$json" --svg "$svg" --path "$path1"
+if [ $status -eq 0 ]; then
+    ok "solves $base with --seed 1: exit 0"
+else
+    not_ok "solves $base with --seed 1: exit 0" "command: $plan $scene --seed 1 --json $json --svg $svg --path $path1" \
+        "expected exit 0, got $status" "$(outputs)"
+fi
+
+if report=$(python3 - "$json" 2>&1 <<'PY'
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+for key in ["scene", "planner", "seed", "solved", "time_s", "stats", "path_length_m", "path_vertices", "primitives"]:
+    assert key in d, f"key '{key}' missing"
+assert d["scene"] == "mobile_blocked", f"scene is {d['scene']!r}"
+assert d["planner"] == "mopl", f"planner is {d['planner']!r}"
+assert d["seed"] == 1, f"seed is {d['seed']!r}"
+assert d["solved"] is True, f"solved is {d['solved']!r}"
+assert isinstance(d["time_s"], (int, float)) and 0 <= d["time_s"] < math.inf, f"time_s is {d['time_s']!r}"
+stats = d["stats"]
+assert isinstance(stats, dict), "stats is not an object"
+for key in ["time_nearest_s", "iterations", "collision_queries"]:
+    assert isinstance(stats.get(key), (int, float)) and stats[key] >= 0, f"stats.{key} is {stats.get(key)!r}"
+assert stats["iterations"] > 0 and stats["collision_queries"] > 0, "no iterations or collision queries counted"
+assert isinstance(d["path_length_m"], (int, float)) and d["path_length_m"] > 0, f"path_length_m is {d['path_length_m']!r}"
+assert isinstance(d["path_vertices"], int) and d["path_vertices"] > 1, f"path_vertices is {d['path_vertices']!r}"
+counts = d["primitives"]
+for kind in ["transit", "push", "pickup", "transfer"]:
+    assert isinstance(counts.get(kind), int) and counts[kind] >= 0, f"primitives.{kind} is {counts.get(kind)!r}"
+assert counts["push"] > 0, "obj3 must be pushed, but primitives.push is 0"
+PY
+); then
+    ok "JSON result is valid and complete"
+else
+    not_ok "JSON result is valid and complete" "$report" "json: $(head -c 800 "$json" 2>/dev/null)"
+fi
+
+if report=$(python3 - "$svg" 2>&1 <<'PY'
+import sys
+import xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+assert root.tag in ("svg", "{http://www.w3.org/2000/svg}svg"), f"root element is <{root.tag}>"
+PY
+); then
+    ok "SVG is well-formed XML with an <svg> root"
+else
+    not_ok "SVG is well-formed XML with an <svg> root" "$report"
+fi
+
+if report=$(python3 - "$path1" "$json" 2>&1 <<'PY'
+import json, math, sys
+lines = [line for line in open(sys.argv[1]).read().splitlines() if line.strip()]
+assert lines and lines[0].startswith("#"), "no header line starting with '#'"
+columns = len(lines[0][1:].split())
+rows = [line.split() for line in lines[1:] if not line.startswith("#")]
+assert len(rows) >= 2, f"{len(rows)} data lines, expected at least 2"
+assert rows[0][0] == "start", f"first data line starts with {rows[0][0]!r}, expected 'start'"
+for number, row in enumerate(rows, 2):
+    assert row[0] in ("start", "transit", "push"), f"data line {number} starts with {row[0]!r}"
+    assert len(row) == columns, f"data line {number} has {len(row)} columns, the header names {columns}"
+    assert all(math.isfinite(float(v)) for v in row[2:]), f"data line {number} has a non-finite value"
+vertices = json.load(open(sys.argv[2])).get("path_vertices")
+assert vertices is None or len(rows) == vertices, f"{len(rows)} data lines but JSON path_vertices {vertices}"
+PY
+); then
+    ok "path file has a header and start/transit/push waypoints"
+else
+    not_ok "path file has a header and start/transit/push waypoints" "$report"
+fi
+
+# --- 2. determinism --------------------------------------------------------------------------------
+path2=$scratch/solved2.txt
+run solve2 "$scene" --seed 1 --path "$path2"
+if [ $status -eq 0 ] && [ -s "$path1" ] && cmp -s "$path1" "$path2"; then
+    ok "same seed twice gives identical path files"
+else
+    not_ok "same seed twice gives identical path files" "second run exit $status" \
+        "$(diff "$path1" "$path2" 2>&1 | head -n 6)"
+fi
+
+# --- 3. help and usage -----------------------------------------------------------------------------
+run help --help
+missing=""
+for option in --seed --time-limit --json --svg --path; do
+    grep -q -F -- "$option" "$out" || missing="$missing $option"
+done
+if [ $status -eq 0 ] && [ -z "$missing" ]; then
+    ok "--help exits 0 and lists the options"
+else
+    not_ok "--help exits 0 and lists the options" "exit $status; options not mentioned:$missing" "$(outputs)"
+fi
+
+run noscene
+if [ $status -eq 2 ]; then
+    ok "no scene argument: exit 2"
+else
+    not_ok "no scene argument: exit 2" "expected exit 2, got $status" "$(outputs)"
+fi
+
+# --- 4. not solved -----------------------------------------------------------------------------------
+walled=$(make_scene walled_goal)
+edit "$walled" '  <!-- the floor is not an obstacle' \
+    '  <!-- four thin walls around the goal of obj3 -->\n  <obstacle name="goal_wall_n"><origin xyz="-0.9 -0.58 0.5"/><box size="0.74 0.1 1"/></obstacle>\n  <obstacle name="goal_wall_s"><origin xyz="-0.9 -1.22 0.5"/><box size="0.74 0.1 1"/></obstacle>\n  <obstacle name="goal_wall_e"><origin xyz="-0.58 -0.9 0.5"/><box size="0.1 0.74 1"/></obstacle>\n  <obstacle name="goal_wall_w"><origin xyz="-1.22 -0.9 0.5"/><box size="0.1 0.74 1"/></obstacle>\n\n  <!-- the floor is not an obstacle'
+walled_json=$scratch/walled.json
+run walled "$walled" --time-limit 1 --json "$walled_json"
+if [ $status -eq 1 ] && python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d["solved"] is False else 1)' "$walled_json" 2>/dev/null; then
+    ok "walled-in goal: exit 1 and JSON solved false"
+else
+    not_ok "walled-in goal: exit 1 and JSON solved false" "command: $plan $walled --time-limit 1 --json $walled_json" \
+        "expected exit 1, got $status" "json: $(head -c 300 "$walled_json" 2>/dev/null)" "$(outputs)"
+fi
+
+# --- 5. bad input ------------------------------------------------------------------------------------
+expect_bad "missing scene file" "$scratch/scenes/no_such_scene.xml" - "not found"
+
+f=$(make_scene malformed_xml)
+edit "$f" '<origin xyz="-1 0 0.5"/>' '<origin xyz="-1 0 0.5">'
+expect_bad "malformed XML" "$f" "$(line_of "$f" '<origin xyz="-1 0 0.5">')" "XML"
+
+f=$(make_scene unknown_element)
+edit "$f" '  <surface name="floor"' '  <colour value="red"/>\n  <surface name="floor"'
+expect_bad "unknown element" "$f" "$(line_of "$f" '<colour')" "colour"
+
+f=$(make_scene unknown_attribute)
+edit "$f" 'max="2.5 2.5"/>' 'max="2.5 2.5" colour="red"/>'
+expect_bad "unknown attribute" "$f" "$(line_of "$f" 'colour="red"')" "colour"
+
+f=$(make_scene malformed_number)
+edit "$f" '<origin xyz="-1 0 0.5"/>' '<origin xyz="-1 0 0.5abc"/>'
+expect_bad "malformed number" "$f" "$(line_of "$f" '0.5abc')" "0.5abc"
+
+f=$(make_scene missing_urdf)
+edit "$f" 'urdf="robots/mobile_disc.urdf"' 'urdf="robots/no_such_robot.urdf"'
+expect_bad "missing URDF file" "$f" "$(line_of "$f" 'no_such_robot.urdf')" "no_such_robot.urdf"
+
+f=$(make_scene start_in_collision)
+edit "$f" '<robot joints="1.9 1.9"/>' '<robot joints="-1 0"/>'
+expect_bad "start in collision" "$f" "$(line_of "$f" '<robot joints="-1 0"/>')" "block1"
+
+f=$(make_scene unknown_primitive)
+edit "$f" '<push_mobile standoff="0.41"/>' '<push_flying standoff="0.41"/>'
+expect_bad "unknown primitive type" "$f" "$(line_of "$f" 'push_flying')" "push_flying"
+
+f=$(make_scene unknown_planner_parameter)
+edit "$f" 'name="vertex_step"' 'name="vertex_stride"'
+expect_bad "unknown planner parameter" "$f" "$(line_of "$f" 'vertex_stride')" "vertex_stride"
+
+f=$(make_scene planner_parameter_out_of_range)
+edit "$f" 'name="connect_step" value="0.05"' 'name="connect_step" value="-1"'
+expect_bad "out-of-range planner parameter" "$f" "$(line_of "$f" 'name="connect_step"')" "connect_step"
+
+f=$(make_scene goal_off_surface)
+edit "$f" '<object name="obj3" xyz="-0.9 -0.9 *"' '<object name="obj3" xyz="3 3 *"'
+expect_bad "goal on no support surface" "$f" "$(line_of "$f" 'xyz="3 3 *"')" "obj3"
+
+expect_bad_option "--seed 0" "--seed" "$scene" --seed 0
+expect_bad_option "--time-limit -1" "--time-limit" "$scene" --time-limit -1
+expect_bad_option "--planner foo" "foo" "$scene" --planner foo
+expect_bad_option "unwritable --json path" "/nonexistent/dir/x.json" "$scene" --time-limit 1 --json /nonexistent/dir/x.json
+
+echo "$passed passed, $failed failed"
+[ $failed -eq 0 ]

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Installs ompl_mm into a scratch prefix, builds the downstream project in test/downstream against
+# it with find_package(ompl_mm), and plans the installed mobile_blocked.xml scene with it.
+# Usage: run_downstream_test.sh BUILD_DIR SOURCE_DIR SCRATCH_DIR
+set -u
+
+if [ $# -ne 3 ]; then
+    echo "usage: $0 BUILD_DIR SOURCE_DIR SCRATCH_DIR" >&2
+    exit 2
+fi
+build_dir=$1
+source_dir=$2
+scratch=$3
+prefix=$scratch/prefix
+downstream_build=$scratch/build
+
+fail() {
+    echo "downstream test FAILED: $*" >&2
+    exit 1
+}
+
+# start from a clean scratch dir so nothing from an earlier run is reused
+rm -rf "$scratch" || fail "cannot clean $scratch"
+mkdir -p "$scratch" || fail "cannot create $scratch"
+
+echo "== install $build_dir into $prefix"
+cmake --install "$build_dir" --prefix "$prefix" || fail "cmake --install $build_dir --prefix $prefix"
+
+scene=$prefix/share/ompl_mm/scenes/mobile_blocked.xml
+[ -f "$scene" ] || fail "installed scene missing: $scene"
+
+echo "== configure $source_dir/test/downstream"
+cmake -S "$source_dir/test/downstream" -B "$downstream_build" -DCMAKE_PREFIX_PATH="$prefix" \
+    -DCMAKE_BUILD_TYPE=Release || fail "configuring the downstream project against $prefix"
+
+echo "== build"
+cmake --build "$downstream_build" -j 2 || fail "building the downstream project"
+
+echo "== run on $scene"
+"$downstream_build/downstream_plan" "$scene"
+status=$?
+[ $status -eq 0 ] || fail "downstream_plan $scene exited with $status (expected 0)"
+
+echo "downstream test passed"

@@ -1,0 +1,228 @@
+// Tests for MOPL: solves MOBILE BLOCKED for fixed seeds and re-checks every solution with an
+// independent planar geometry model (discs and rectangles, no FCL), then checks reproducibility.
+#include "ompl_mm/geometric/ManipulationSetup.h"
+#include "ompl_mm/scene/SceneLoader.h"
+
+#include <ompl/util/Console.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace ompl_mm;
+
+namespace
+{
+    constexpr double TIME_LIMIT = 60.0;  // a bound, so that a regression fails instead of hanging
+    constexpr double RADIUS = 0.2;       // robot and objects are discs of this radius seen from above
+    constexpr double STANDOFF = 0.41;
+
+    Scene mobileBlocked()
+    {
+        return loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
+    }
+
+    /** True when a disc at p overlaps the box footprint of an obstacle (axis-aligned here). */
+    bool discHitsBox(const Eigen::Vector2d &p, const Obstacle &box)
+    {
+        const Eigen::Vector2d centre = box.pose.translation().head<2>();
+        const Eigen::Vector2d half = 0.5 * box.shape.boxSize.head<2>();
+        const Eigen::Vector2d closest = p.cwiseMax(centre - half).cwiseMin(centre + half);
+        return (closest - p).norm() < RADIUS - 1e-9;
+    }
+
+    /** Independent validity of a MOBILE BLOCKED configuration in the plane. */
+    std::string planarFault(const Eigen::Vector2d &robot, const std::vector<Eigen::Vector2d> &objects,
+                            const Scene &scene)
+    {
+        std::vector<Eigen::Vector2d> discs{robot};
+        discs.insert(discs.end(), objects.begin(), objects.end());
+        for (std::size_t a = 0; a < discs.size(); ++a)
+        {
+            for (const Obstacle &obstacle : scene.obstacles)
+                if (discHitsBox(discs[a], obstacle))
+                    return "disc " + std::to_string(a) + " hits " + obstacle.name;
+            for (std::size_t b = a + 1; b < discs.size(); ++b)
+                if ((discs[a] - discs[b]).norm() < 2 * RADIUS - 1e-9)
+                    return "discs " + std::to_string(a) + " and " + std::to_string(b) + " overlap";
+        }
+        return {};
+    }
+
+    /** Re-checks a solution without the library's collision checker or labels' own checks. */
+    void recheck(const ManipulationSetup &setup, const ManipulationPath &path, const Scene &scene)
+    {
+        const ManipulationStateSpace &space = *setup.manipulationSpace();
+        const unsigned int n = space.objectCount();
+        auto robotAt = [&](const ompl::base::State *s)
+        { return Eigen::Vector2d(space.robotValues(s)[0], space.robotValues(s)[1]); };
+        auto objectsAt = [&](const ompl::base::State *s)
+        {
+            std::vector<Eigen::Vector2d> objects;
+            for (unsigned int i = 0; i < n; ++i)
+                objects.push_back(space.objectPosition(s, i).head<2>());
+            return objects;
+        };
+
+        // starts at the start
+        const ompl::base::State *first = path.getState(0);
+        EXPECT_NEAR((robotAt(first) - Eigen::Vector2d(1.9, 1.9)).norm(), 0.0, 1e-12);
+        for (unsigned int i = 0; i < n; ++i)
+            EXPECT_NEAR((objectsAt(first)[i] - scene.objects[i].start.position.head<2>()).norm(), 0.0, 1e-12);
+
+        ompl::base::State *between = space.allocState();
+        for (std::size_t k = 0; k + 1 < path.getStateCount(); ++k)
+        {
+            const ompl::base::State *a = path.getState(k);
+            const ompl::base::State *b = path.getState(k + 1);
+            const SegmentLabel label = path.label(k);
+            // objects move only while pushed: only the labelled object, with the robot behind it
+            std::vector<unsigned int> moved;
+            for (unsigned int i = 0; i < n; ++i)
+                if ((objectsAt(a)[i] - objectsAt(b)[i]).norm() > 1e-9)
+                    moved.push_back(i);
+            if (label.kind == PrimitiveKind::Transit)
+                EXPECT_TRUE(moved.empty()) << "transit segment " << k << " moves an object";
+            else
+            {
+                ASSERT_EQ(label.kind, PrimitiveKind::Push);
+                ASSERT_EQ(moved.size(), 1u) << "push segment " << k;
+                EXPECT_EQ(static_cast<int>(moved[0]), label.object);
+                const Eigen::Vector2d motion = objectsAt(b)[moved[0]] - objectsAt(a)[moved[0]];
+                for (const ompl::base::State *s : {a, b})
+                {
+                    const Eigen::Vector2d offset = objectsAt(s)[moved[0]] - robotAt(s);
+                    EXPECT_NEAR(offset.norm(), STANDOFF, 1e-9) << "push segment " << k;
+                    EXPECT_NEAR(offset.normalized().dot(motion.normalized()), 1.0, 1e-9)
+                        << "push segment " << k;
+                }
+                EXPECT_NEAR((robotAt(b) - robotAt(a) - motion).norm(), 0.0, 1e-9) << "push segment " << k;
+            }
+            // every state along the segment, at 1 cm, is free in the planar model
+            const double length = std::max((robotAt(b) - robotAt(a)).norm(), 1e-3);
+            const int steps = static_cast<int>(std::ceil(length / 0.01));
+            for (int j = 0; j <= steps; ++j)
+            {
+                space.interpolate(a, b, static_cast<double>(j) / steps, between);
+                const std::string fault = planarFault(robotAt(between), objectsAt(between), scene);
+                ASSERT_TRUE(fault.empty()) << "segment " << k << " step " << j << ": " << fault;
+            }
+        }
+        space.freeState(between);
+
+        // ends in the goal: robot at the centre, obj3 at (-0.9, -0.9)
+        const ompl::base::State *last = path.getState(path.getStateCount() - 1);
+        EXPECT_LT((robotAt(last) - Eigen::Vector2d(0.0, 0.0)).norm(), 0.011);
+        EXPECT_LT((objectsAt(last)[2] - Eigen::Vector2d(-0.9, -0.9)).norm(), 0.011);
+        for (unsigned int i = 0; i < n; ++i)
+            EXPECT_NEAR(space.objectPosition(last, i).z(), 0.0, 1e-12) << "objects stay on the floor";
+    }
+
+    class MOPLOnMobileBlocked : public ::testing::TestWithParam<unsigned int>
+    {
+    protected:
+        void SetUp() override { ompl::msg::setLogLevel(ompl::msg::LOG_WARN); }
+    };
+}  // namespace
+
+TEST_P(MOPLOnMobileBlocked, SolvesAndSolutionPassesIndependentRecheck)
+{
+    const Scene scene = mobileBlocked();
+    ManipulationSetup setup(scene);
+    setup.mopl()->setSeed(GetParam());
+    ASSERT_EQ(setup.solve(TIME_LIMIT), ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const ManipulationPath &path = setup.manipulationPath();
+    EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
+    EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
+    EXPECT_GT(path.primitiveCounts().at("push"), 0u) << "obj3 must be pushed";
+    recheck(setup, path, scene);
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, MOPLOnMobileBlocked, ::testing::Values(1u, 2u, 3u, 4u, 5u, 6u));
+
+TEST(MOPL, SameSeedGivesSamePath)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const Scene scene = mobileBlocked();
+    std::vector<std::vector<double>> paths[2];
+    for (auto &values : paths)
+    {
+        ManipulationSetup setup(scene);
+        setup.mopl()->setSeed(42);
+        ASSERT_EQ(setup.solve(TIME_LIMIT), ompl::base::PlannerStatus::EXACT_SOLUTION);
+        const ManipulationPath &path = setup.manipulationPath();
+        for (std::size_t k = 0; k < path.getStateCount(); ++k)
+        {
+            std::vector<double> reals;
+            setup.getStateSpace()->copyToReals(reals, path.getState(k));
+            values.push_back(reals);
+        }
+    }
+    EXPECT_EQ(paths[0], paths[1]);
+}
+
+TEST(MOPL, DifferentSeedsExploreDifferently)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const Scene scene = mobileBlocked();
+    std::uint64_t iterations[2];
+    for (unsigned int seed : {1u, 2u})
+    {
+        ManipulationSetup setup(scene);
+        setup.mopl()->setSeed(seed);
+        ASSERT_EQ(setup.solve(TIME_LIMIT), ompl::base::PlannerStatus::EXACT_SOLUTION);
+        iterations[seed - 1] = setup.mopl()->statistics().iterations;
+    }
+    EXPECT_NE(iterations[0], iterations[1]);
+}
+
+TEST(MOPL, StartInsideGoalIsSolvedWithoutSearch)
+{
+    Scene scene = mobileBlocked();
+    scene.robotStart = {0.0, 0.0};
+    scene.objects[2].start.position = {-0.9, -0.9, 0.0};
+    ManipulationSetup setup(scene);
+    ASSERT_EQ(setup.solve(1.0), ompl::base::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_EQ(setup.manipulationPath().getStateCount(), 1u);
+    EXPECT_EQ(setup.mopl()->statistics().iterations, 0u);
+}
+
+TEST(MOPL, ReportsTimeoutWhenGoalIsWalledIn)
+{
+    // obj3's goal is free, but walls around it make every push there collide
+    Scene scene = mobileBlocked();
+    Obstacle cage;
+    cage.name = "cage";
+    cage.shape.kind = Shape::Kind::Box;
+    cage.shape.boxSize = {0.74, 0.1, 1.0};
+    for (double y : {-0.58, -1.22})
+    {
+        cage.pose = Eigen::Translation3d(-0.9, y, 0.5);
+        scene.obstacles.push_back(cage);
+    }
+    cage.shape.boxSize = {0.1, 0.74, 1.0};
+    for (double x : {-0.58, -1.22})
+    {
+        cage.pose = Eigen::Translation3d(x, -0.9, 0.5);
+        scene.obstacles.push_back(cage);
+    }
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    ManipulationSetup setup(scene);
+    setup.mopl()->setSeed(1);
+    EXPECT_EQ(setup.solve(0.5), ompl::base::PlannerStatus::TIMEOUT);
+    EXPECT_FALSE(setup.getProblemDefinition()->hasExactSolution());
+}
+
+TEST(MOPL, DeclaresEveryTunableParameter)
+{
+    ManipulationSetup setup(mobileBlocked());
+    for (const char *name :
+         {"connect_step", "vertex_step", "smoothing_attempts", "robot_weight", "moving_object_penalty",
+          "move_to_object_penalty", "move_to_object_factor", "contact_distance", "object_sample_probability",
+          "undefined_probability", "start_value_probability", "random_robot_probability"})
+        EXPECT_TRUE(setup.mopl()->params().hasParam(name)) << name;
+    EXPECT_EQ(setup.mopl()->params().getParam("vertex_step")->getValue(), "0.35") << "set by the scene";
+    EXPECT_THROW(setup.mopl()->params().setParam("connect_step", "-1"), std::runtime_error);
+    EXPECT_THROW(setup.mopl()->params().setParam("undefined_probability", "1.5"), std::runtime_error);
+    EXPECT_THROW(setup.mopl()->params().setParam("vertex_step", "abc"), std::runtime_error);
+}

@@ -1,0 +1,393 @@
+// Tests for RobotModel.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "ompl_mm/robot/RobotModel.h"
+#include "ompl_mm/scene/InputError.h"
+
+namespace ompl_mm
+{
+    namespace
+    {
+        const std::string ROBOTS_DIR = std::string(OMPL_MM_TEST_DATA_DIR) + "/robots/";
+        const double PI = std::acos(-1.0);
+        const double TOLERANCE = 1e-12;
+
+        RobotModel load(const std::string &file)
+        {
+            return RobotModel::fromUrdfFile(ROBOTS_DIR + file);
+        }
+
+        /** The message of the InputError f throws, or a marker when it throws none. */
+        std::string inputErrorOf(const std::function<void()> &f)
+        {
+            try
+            {
+                f();
+            }
+            catch (const InputError &e)
+            {
+                return e.what();
+            }
+            return "(no InputError)";
+        }
+
+        double maxDifference(const Eigen::Isometry3d &a, const Eigen::Isometry3d &b)
+        {
+            return (a.matrix() - b.matrix()).cwiseAbs().maxCoeff();
+        }
+
+        /** Uniform joint values within the model's limits. */
+        std::vector<double> randomJoints(const RobotModel &robot, std::mt19937 &rng)
+        {
+            std::vector<double> q(robot.dof());
+            for (unsigned int i = 0; i < robot.dof(); ++i)
+            {
+                const Joint &joint = robot.variableJoint(i);
+                q[i] = std::uniform_real_distribution<double>(joint.lower, joint.upper)(rng);
+            }
+            return q;
+        }
+
+        /** A base pose away from the identity, so tests see that it is applied. */
+        Eigen::Isometry3d someBase()
+        {
+            Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
+            base.translate(Eigen::Vector3d(0.4, -1.2, 0.3));
+            base.rotate(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()));
+            return base;
+        }
+
+        /** Standard DH link transform Rz(theta) Tz(d) Tx(a) Rx(alpha), written out entry by entry. */
+        Eigen::Matrix4d dhMatrix(double theta, double d, double a, double alpha)
+        {
+            const double ct = std::cos(theta), st = std::sin(theta);
+            const double ca = std::cos(alpha), sa = std::sin(alpha);
+            Eigen::Matrix4d m;
+            m << ct, -st * ca, st * sa, a * ct,  //
+                st, ct * ca, -ct * sa, a * st,   //
+                0.0, sa, ca, d,                  //
+                0.0, 0.0, 0.0, 1.0;
+            return m;
+        }
+
+        /** A robot with one joint "shoulder" from "base" to "arm"; arm carries the given geometry. */
+        std::string oneJointUrdf(const std::string &type, const std::string &jointBody,
+                                 const std::string &geometry = "<sphere radius=\"0.1\"/>")
+        {
+            return "<?xml version=\"1.0\"?>\n"
+                   "<robot name=\"bad\">\n"
+                   "  <link name=\"base\"/>\n"
+                   "  <link name=\"arm\">\n"
+                   "    <collision>\n"
+                   "      <geometry>" +
+                   geometry +
+                   "</geometry>\n"
+                   "    </collision>\n"
+                   "  </link>\n"
+                   "  <joint name=\"shoulder\" type=\"" +
+                   type +
+                   "\">\n"
+                   "    <parent link=\"base\"/>\n"
+                   "    <child link=\"arm\"/>\n" +
+                   jointBody +
+                   "  </joint>\n"
+                   "</robot>\n";
+        }
+
+        const std::string REVOLUTE_LIMITS =
+            "    <limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>\n";
+
+        TEST(RobotModel, PlanarArmToolMatchesAnalyticPosition)
+        {
+            const RobotModel robot = load("planar_2link.urdf");
+            const int tool = robot.linkIndex("tool");
+            const double l1 = 0.5, l2 = 0.3;
+            for (double q1 : {-2.5, -1.0, 0.0, 0.3, 1.7, 2.9})
+                for (double q2 : {-2.4, -0.5, 0.0, 0.8, 2.2})
+                {
+                    const double q[] = {q1, q2};
+                    const Eigen::Isometry3d frame = robot.linkFrame(q, Eigen::Isometry3d::Identity(), tool);
+                    EXPECT_NEAR(frame.translation().x(), l1 * std::cos(q1) + l2 * std::cos(q1 + q2),
+                                TOLERANCE);
+                    EXPECT_NEAR(frame.translation().y(), l1 * std::sin(q1) + l2 * std::sin(q1 + q2),
+                                TOLERANCE);
+                    EXPECT_NEAR(frame.translation().z(), 0.0, TOLERANCE);
+                    // the tool x axis points along the second link
+                    const Eigen::Vector3d toolX = frame.linear().col(0);
+                    EXPECT_NEAR(toolX.x(), std::cos(q1 + q2), TOLERANCE);
+                    EXPECT_NEAR(toolX.y(), std::sin(q1 + q2), TOLERANCE);
+                }
+        }
+
+        TEST(RobotModel, MobileBaseFrameIsBaseTranslated)
+        {
+            const RobotModel robot = load("mobile_base_xy.urdf");
+            const Eigen::Isometry3d base = someBase();
+            const int body = robot.linkIndex("body");
+            const int slider = robot.linkIndex("slider");
+            for (double qx : {-2.9, -0.4, 0.0, 1.3})
+                for (double qy : {-1.8, 0.0, 0.6, 1.9})
+                {
+                    const double q[] = {qx, qy};
+                    const Eigen::Isometry3d expectedBody = base * Eigen::Translation3d(qx, qy, 0.0);
+                    const Eigen::Isometry3d expectedSlider = base * Eigen::Translation3d(qx, 0.0, 0.0);
+                    EXPECT_LT(maxDifference(robot.linkFrame(q, base, body), expectedBody), TOLERANCE);
+                    EXPECT_LT(maxDifference(robot.linkFrame(q, base, slider), expectedSlider), TOLERANCE);
+                }
+        }
+
+        TEST(RobotModel, SevenDofArmFlangeMatchesDhProduct)
+        {
+            const RobotModel robot = load("kuka_lwr_dh.urdf");
+            ASSERT_EQ(robot.dof(), 7u);
+            const double d[] = {0.31, 0.0, 0.40, 0.0, 0.39, 0.0, 0.0};
+            const double alphaDegrees[] = {90.0, -90.0, -90.0, 90.0, 90.0, -90.0, 0.0};
+            const int flange = robot.linkIndex("flange");
+            const Eigen::Isometry3d base = someBase();
+            std::mt19937 rng(20240611);
+            for (int trial = 0; trial < 200; ++trial)
+            {
+                const std::vector<double> q = randomJoints(robot, rng);
+                Eigen::Matrix4d expected = base.matrix();
+                for (int i = 0; i < 7; ++i)
+                    expected = expected * dhMatrix(q[i], d[i], 0.0, alphaDegrees[i] * PI / 180.0);
+                const Eigen::Isometry3d frame = robot.linkFrame(q.data(), base, flange);
+                EXPECT_LT((frame.matrix() - expected).cwiseAbs().maxCoeff(), TOLERANCE) << "trial " << trial;
+            }
+        }
+
+        TEST(RobotModel, ForwardKinematicsAgreesWithLinkFrameForEveryLink)
+        {
+            std::mt19937 rng(7);
+            const Eigen::Isometry3d base = someBase();
+            for (const char *file :
+                 {"planar_2link.urdf", "mobile_base_xy.urdf", "kuka_lwr_dh.urdf", "torso_tree.urdf"})
+            {
+                const RobotModel robot = load(file);
+                std::vector<Eigen::Isometry3d> frames;
+                for (int trial = 0; trial < 20; ++trial)
+                {
+                    const std::vector<double> q = randomJoints(robot, rng);
+                    robot.forwardKinematics(q.data(), base, frames);
+                    ASSERT_EQ(frames.size(), robot.links().size());
+                    EXPECT_LT(maxDifference(frames[0], base), TOLERANCE);
+                    for (std::size_t link = 0; link < frames.size(); ++link)
+                        EXPECT_LT(maxDifference(frames[link],
+                                                robot.linkFrame(q.data(), base, static_cast<int>(link))),
+                                  TOLERANCE)
+                            << file << " link " << robot.links()[link].name;
+                }
+            }
+        }
+
+        TEST(RobotModel, ReadsStructureLimitsAndShapes)
+        {
+            const RobotModel robot = load("planar_2link.urdf");
+            EXPECT_EQ(robot.name(), "planar_2link");
+            ASSERT_EQ(robot.dof(), 2u);
+            ASSERT_EQ(robot.links().size(), 4u);
+            ASSERT_EQ(robot.joints().size(), 3u);
+
+            const std::vector<std::string> names = {"base", "link1", "link2", "tool"};
+            for (std::size_t i = 0; i < names.size(); ++i)
+            {
+                const Link &link = robot.links()[i];
+                EXPECT_EQ(link.name, names[i]);
+                EXPECT_EQ(link.parent, static_cast<int>(i) - 1);
+                EXPECT_EQ(robot.linkIndex(names[i]), static_cast<int>(i));
+            }
+            EXPECT_EQ(robot.links()[0].joint, -1);
+            EXPECT_EQ(robot.joints()[robot.links()[3].joint].name, "tool_joint");
+
+            const Joint &joint1 = robot.variableJoint(0);
+            EXPECT_EQ(joint1.name, "joint1");
+            EXPECT_EQ(joint1.type, Joint::Type::Revolute);
+            EXPECT_EQ(joint1.variable, 0);
+            EXPECT_EQ(joint1.lower, -3.0);
+            EXPECT_EQ(joint1.upper, 3.0);
+            const Joint &joint2 = robot.variableJoint(1);
+            EXPECT_EQ(joint2.name, "joint2");
+            EXPECT_EQ(joint2.variable, 1);
+            EXPECT_EQ(joint2.lower, -2.5);
+            EXPECT_EQ(joint2.upper, 2.5);
+            EXPECT_LT((joint2.axis - Eigen::Vector3d::UnitZ()).norm(), TOLERANCE);  // written as 0 0 2
+            EXPECT_EQ(robot.joints()[robot.links()[3].joint].type, Joint::Type::Fixed);
+            EXPECT_EQ(robot.joints()[robot.links()[3].joint].variable, -1);
+
+            ASSERT_EQ(robot.links()[0].shapes.size(), 1u);
+            EXPECT_EQ(robot.links()[0].shapes[0].shape.kind, Shape::Kind::Box);
+            EXPECT_LT((robot.links()[0].shapes[0].shape.boxSize - Eigen::Vector3d(0.2, 0.2, 0.1)).norm(),
+                      TOLERANCE);
+
+            ASSERT_EQ(robot.links()[1].shapes.size(), 1u);
+            const LinkShape &cylinder = robot.links()[1].shapes[0];
+            EXPECT_EQ(cylinder.shape.kind, Shape::Kind::Cylinder);
+            EXPECT_EQ(cylinder.shape.radius, 0.05);
+            EXPECT_EQ(cylinder.shape.length, 0.5);
+            EXPECT_LT((cylinder.origin.translation() - Eigen::Vector3d(0.25, 0.0, 0.0)).norm(), TOLERANCE);
+            // pitched by 90 degrees, the cylinder's z axis lies along the link's x axis
+            EXPECT_LT((cylinder.origin.linear().col(2) - Eigen::Vector3d::UnitX()).norm(), 1e-9);
+
+            ASSERT_EQ(robot.links()[2].shapes.size(), 2u);
+            EXPECT_EQ(robot.links()[2].shapes[0].shape.kind, Shape::Kind::Box);
+            const LinkShape &sphere = robot.links()[2].shapes[1];
+            EXPECT_EQ(sphere.shape.kind, Shape::Kind::Sphere);
+            EXPECT_EQ(sphere.shape.radius, 0.04);
+            EXPECT_LT((sphere.origin.translation() - Eigen::Vector3d(0.3, 0.0, 0.0)).norm(), TOLERANCE);
+            EXPECT_TRUE(robot.links()[3].shapes.empty());
+        }
+
+        TEST(RobotModel, TreeIsParentsFirstWithVariablesInFileOrder)
+        {
+            const RobotModel robot = load("torso_tree.urdf");
+            ASSERT_EQ(robot.dof(), 5u);
+            EXPECT_EQ(robot.links()[0].name, "torso");
+            for (std::size_t i = 1; i < robot.links().size(); ++i)
+                EXPECT_LT(robot.links()[i].parent, static_cast<int>(i)) << robot.links()[i].name;
+
+            // depth first, siblings in file order: each arm's variables are contiguous
+            const std::vector<std::string> order = {"right_shoulder", "right_elbow", "left_shoulder",
+                                                    "left_elbow", "head_pan"};
+            for (unsigned int i = 0; i < robot.dof(); ++i)
+            {
+                EXPECT_EQ(robot.variableJoint(i).name, order[i]);
+                EXPECT_EQ(robot.variableJoint(i).variable, static_cast<int>(i));
+            }
+
+            const Joint &head = robot.variableJoint(4);
+            EXPECT_EQ(head.type, Joint::Type::Continuous);
+            EXPECT_EQ(head.lower, -PI);
+            EXPECT_EQ(head.upper, PI);
+            EXPECT_LT((robot.variableJoint(3).axis - Eigen::Vector3d(1.0, 1.0, 0.0) / std::sqrt(2.0)).norm(),
+                      TOLERANCE);
+            EXPECT_EQ(robot.links()[robot.linkIndex("head")].shapes.at(0).shape.radius, 0.12);
+        }
+
+        TEST(RobotModel, IsInSubtreeFollowsBranches)
+        {
+            const RobotModel robot = load("torso_tree.urdf");
+            const int torso = robot.linkIndex("torso");
+            const int leftUpper = robot.linkIndex("left_upper");
+            const int leftHand = robot.linkIndex("left_hand");
+            const int rightUpper = robot.linkIndex("right_upper");
+            const int rightLower = robot.linkIndex("right_lower");
+            const int head = robot.linkIndex("head");
+
+            for (std::size_t link = 0; link < robot.links().size(); ++link)
+            {
+                EXPECT_TRUE(robot.isInSubtree(static_cast<int>(link), torso));
+                EXPECT_TRUE(robot.isInSubtree(static_cast<int>(link), static_cast<int>(link)));
+            }
+            EXPECT_TRUE(robot.isInSubtree(leftHand, leftUpper));
+            EXPECT_TRUE(robot.isInSubtree(rightLower, rightUpper));
+            EXPECT_FALSE(robot.isInSubtree(leftUpper, leftHand));
+            EXPECT_FALSE(robot.isInSubtree(rightLower, leftUpper));
+            EXPECT_FALSE(robot.isInSubtree(leftHand, rightUpper));
+            EXPECT_FALSE(robot.isInSubtree(head, leftUpper));
+            EXPECT_FALSE(robot.isInSubtree(torso, head));
+        }
+
+        TEST(RobotModel, UnknownLinkNameThrowsNamingRobotAndLink)
+        {
+            const RobotModel robot = load("planar_2link.urdf");
+            try
+            {
+                robot.linkIndex("gripper");
+                FAIL() << "no exception";
+            }
+            catch (const ompl::Exception &e)
+            {
+                EXPECT_EQ(std::string(e.what()), "robot 'planar_2link' has no link 'gripper'");
+            }
+        }
+
+        TEST(RobotModel, BadFilesThrowNamingTheFile)
+        {
+            const std::string missing = ROBOTS_DIR + "no_such_robot.urdf";
+            EXPECT_EQ(inputErrorOf([&] { RobotModel::fromUrdfFile(missing); }),
+                      missing + ": cannot read URDF file");
+
+            const std::string mesh = ROBOTS_DIR + "bad_mesh.urdf";
+            EXPECT_EQ(
+                inputErrorOf([&] { RobotModel::fromUrdfFile(mesh); }),
+                mesh +
+                    ":5: link 'arm': mesh collision geometry is not supported; use box, cylinder or sphere");
+        }
+
+        TEST(RobotModel, BadUrdfTextThrowsNamingSourceAndElement)
+        {
+            const std::string name = "bad.urdf";
+            auto expectError = [&](const std::string &urdf, const std::string &part)
+            {
+                const std::string message = inputErrorOf([&] { RobotModel::fromUrdfString(urdf, name); });
+                EXPECT_EQ(message.rfind(name + ":", 0), 0u) << message;
+                EXPECT_NE(message.find(part), std::string::npos) << message;
+            };
+
+            expectError("<robot name=\"x\"><link name=\"a\"></robot>", "invalid URDF");
+            expectError("<robot name=\"x\"><link name=\"a\"/><link name=\"b\"/></robot>", "invalid URDF");
+            expectError(oneJointUrdf("revolute", REVOLUTE_LIMITS, "<mesh filename=\"arm.stl\"/>"),
+                        "link 'arm': mesh collision geometry is not supported");
+            expectError(oneJointUrdf("revolute", ""), "joint 'shoulder': revolute joint has no <limit>");
+            expectError(oneJointUrdf("prismatic", ""), "joint 'shoulder': prismatic joint has no <limit>");
+            expectError(oneJointUrdf("revolute",
+                                     "    <limit lower=\"1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>\n"),
+                        "joint 'shoulder': lower limit 1 must be below upper limit 1");
+            expectError(oneJointUrdf("prismatic",
+                                     "    <limit lower=\"2\" upper=\"-1\" effort=\"1\" velocity=\"1\"/>\n"),
+                        "joint 'shoulder': lower limit 2 must be below upper limit -1");
+            expectError(oneJointUrdf("floating", ""), "joint 'shoulder': floating joints are not supported");
+            expectError(oneJointUrdf("planar", ""), "joint 'shoulder': planar joints are not supported");
+            expectError(oneJointUrdf("revolute", REVOLUTE_LIMITS + "    <axis xyz=\"0 0 0\"/>\n"),
+                        "joint 'shoulder': axis must be a non-zero vector");
+            expectError(oneJointUrdf("revolute", REVOLUTE_LIMITS, "<sphere radius=\"-0.1\"/>"),
+                        "link 'arm': sphere radius must be positive");
+        }
+
+        TEST(RobotModel, JointErrorsGiveTheLineOfTheJoint)
+        {
+            const std::string urdf = oneJointUrdf("revolute", "");
+            const std::string before = urdf.substr(0, urdf.find("<joint"));
+            const long line = 1 + std::count(before.begin(), before.end(), '\n');
+            EXPECT_EQ(
+                inputErrorOf([&] { RobotModel::fromUrdfString(urdf, "arm.urdf"); }),
+                "arm.urdf:" + std::to_string(line) + ": joint 'shoulder': revolute joint has no <limit>");
+        }
+
+        TEST(RobotModel, SceneMobileDiscHasTwoPrismaticJointsAndASphere)
+        {
+            const RobotModel robot =
+                RobotModel::fromUrdfFile(std::string(OMPL_MM_SCENES_DIR) + "/robots/mobile_disc.urdf");
+            EXPECT_EQ(robot.links()[0].name, "world");
+            ASSERT_EQ(robot.dof(), 2u);
+            EXPECT_EQ(robot.variableJoint(0).name, "x");
+            EXPECT_EQ(robot.variableJoint(1).name, "y");
+            for (unsigned int i = 0; i < 2; ++i)
+            {
+                EXPECT_EQ(robot.variableJoint(i).type, Joint::Type::Prismatic);
+                EXPECT_EQ(robot.variableJoint(i).lower, -2.5);
+                EXPECT_EQ(robot.variableJoint(i).upper, 2.5);
+            }
+            const Link &body = robot.links()[robot.linkIndex("body")];
+            ASSERT_EQ(body.shapes.size(), 1u);
+            EXPECT_EQ(body.shapes[0].shape.kind, Shape::Kind::Sphere);
+            EXPECT_EQ(body.shapes[0].shape.radius, 0.2);
+            EXPECT_LT((body.shapes[0].origin.translation() - Eigen::Vector3d(0.0, 0.0, 0.25)).norm(),
+                      TOLERANCE);
+
+            // the sphere centre in the world sits at (x, y, 0.25)
+            const double q[] = {1.25, -0.75};
+            const Eigen::Vector3d centre =
+                robot.linkFrame(q, Eigen::Isometry3d::Identity(), robot.linkIndex("body")) *
+                body.shapes[0].origin.translation();
+            EXPECT_LT((centre - Eigen::Vector3d(1.25, -0.75, 0.25)).norm(), TOLERANCE);
+        }
+    }  // namespace
+}  // namespace ompl_mm

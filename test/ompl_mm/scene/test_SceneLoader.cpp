@@ -1,0 +1,334 @@
+// Tests for SceneLoader.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "ompl_mm/scene/InputError.h"
+#include "ompl_mm/scene/SceneLoader.h"
+#include "ompl_mm/scene/XmlReading.h"
+
+using namespace ompl_mm;
+
+namespace
+{
+    const std::string SCENES_DIR = OMPL_MM_SCENES_DIR;
+    const std::string DATA_DIR = std::string(OMPL_MM_TEST_DATA_DIR) + "/scenes";
+    const double PI = std::acos(-1.0);
+
+    /** A small valid scene, one element per line, so that a test can replace line n (1-based) and
+        expect the error at line n. URDF paths resolve against the scenes directory. */
+    std::vector<std::string> validLines()
+    {
+        return {
+            R"(<scene name="inline">)",                                                           // 1
+            R"(  <robot urdf="robots/mobile_disc.urdf" tool_link="body"/>)",                      // 2
+            R"(  <obstacle name="block"><origin xyz="1 1 0.5"/><box size="1 1 1"/></obstacle>)",  // 3
+            R"(  <surface name="floor" height="0" min="-2.5 -2.5" max="2.5 2.5"/>)",              // 4
+            R"(  <object name="obj1"><cylinder radius="0.2" length="0.5"/></object>)",            // 5
+            R"(  <start>)",                                                                       // 6
+            R"(    <robot joints="0 0"/>)",                                                       // 7
+            R"(    <object name="obj1" xyz="-1 0 0"/>)",                                          // 8
+            R"(  </start>)",                                                                      // 9
+            R"(  <goal>)",                                                                        // 10
+            R"(    <object name="obj1" xyz="1 * *"/>)",                                           // 11
+            R"(  </goal>)",                                                                       // 12
+            R"(  <primitives><transit/></primitives>)",                                           // 13
+            R"(</scene>)",                                                                        // 14
+        };
+    }
+
+    /** validLines() with line `line` (1-based) replaced by text. */
+    std::vector<std::string> replaced(int line, const std::string &text)
+    {
+        std::vector<std::string> lines = validLines();
+        lines.at(line - 1) = text;
+        return lines;
+    }
+
+    Scene parseLines(const std::vector<std::string> &lines, const std::string &sourceName = "inline.xml")
+    {
+        std::string xml;
+        for (const std::string &line : lines)
+            xml += line + "\n";
+        return parseScene(xml, sourceName, SCENES_DIR);
+    }
+
+    /** The message of the InputError thrown by f, or "" when none is thrown. */
+    template <typename F>
+    std::string errorOf(F f)
+    {
+        try
+        {
+            f();
+        }
+        catch (const InputError &e)
+        {
+            return e.what();
+        }
+        return "";
+    }
+
+    /** Expects parsing lines to fail at inline.xml:line with a message containing phrase. */
+    void expectError(const std::vector<std::string> &lines, int line, const std::string &phrase)
+    {
+        const std::string message = errorOf([&] { parseLines(lines); });
+        EXPECT_EQ(message.rfind("inline.xml:" + std::to_string(line) + ": ", 0), 0u) << message;
+        EXPECT_NE(message.find(phrase), std::string::npos) << message;
+    }
+
+    /** The 1-based number of the first line of the file containing text. */
+    int lineContaining(const std::string &file, const std::string &text)
+    {
+        std::ifstream in(file);
+        std::string line;
+        for (int number = 1; std::getline(in, line); ++number)
+            if (line.find(text) != std::string::npos)
+                return number;
+        return 0;
+    }
+}  // namespace
+
+TEST(SceneLoader, LoadsMobileBlocked)
+{
+    const std::string file = SCENES_DIR + "/mobile_blocked.xml";
+    const Scene scene = loadScene(file);
+
+    EXPECT_EQ(scene.name, "mobile_blocked");
+    EXPECT_EQ(scene.file, file);
+    EXPECT_DOUBLE_EQ(scene.timeLimit, 60.0);
+    EXPECT_EQ(std::filesystem::path(scene.robot.urdfFile),
+              std::filesystem::canonical(SCENES_DIR + "/robots/mobile_disc.urdf"));
+    EXPECT_EQ(scene.robot.toolLink, "body");
+    EXPECT_EQ(scene.robot.where.line, lineContaining(file, "<robot urdf="));
+
+    EXPECT_EQ(scene.obstacles.size(), 7u);
+    ASSERT_EQ(scene.surfaces.size(), 1u);
+    EXPECT_EQ(scene.surfaces[0].name, "floor");
+    EXPECT_DOUBLE_EQ(scene.surfaces[0].height, 0.0);
+    EXPECT_TRUE(scene.surfaces[0].obstacle.empty());
+
+    const std::vector<Eigen::Vector2d> starts{{-2.0, 0.3}, {0.8, -0.1}, {-1.5, -1.5}, {1.2, 1.9}};
+    ASSERT_EQ(scene.objects.size(), 4u);
+    for (std::size_t i = 0; i < starts.size(); ++i)
+    {
+        const MovableObject &object = scene.objects[i];
+        EXPECT_EQ(object.name, "obj" + std::to_string(i + 1));
+        EXPECT_EQ(object.shape.kind, Shape::Kind::Cylinder);
+        EXPECT_DOUBLE_EQ(object.shape.radius, 0.2);
+        EXPECT_DOUBLE_EQ(object.shape.height(), 0.5);
+        EXPECT_TRUE(object.start.position.isApprox(Eigen::Vector3d(starts[i].x(), starts[i].y(), 0.0)));
+        EXPECT_DOUBLE_EQ(object.start.yaw, 0.0);
+    }
+    EXPECT_EQ(scene.objectIndex("obj3"), 2);
+    EXPECT_EQ(scene.objectIndex("nothing"), -1);
+    EXPECT_EQ(scene.robotStart, (std::vector<double>{1.9, 1.9}));
+    EXPECT_EQ(scene.robotStartWhere.line, lineContaining(file, "<robot joints=\"1.9 1.9\""));
+
+    ASSERT_EQ(scene.robotGoal.joints.size(), 2u);
+    EXPECT_EQ(scene.robotGoal.joints[0], 0.0);
+    EXPECT_EQ(scene.robotGoal.joints[1], 0.0);
+    EXPECT_DOUBLE_EQ(scene.robotGoal.tolerance, 0.01);
+    ASSERT_EQ(scene.objectGoals.size(), 1u);
+    const ObjectGoal &goal = scene.objectGoals[0];
+    EXPECT_EQ(goal.object, "obj3");
+    EXPECT_EQ(goal.position[0], -0.9);
+    EXPECT_EQ(goal.position[1], -0.9);
+    EXPECT_FALSE(goal.position[2].has_value());
+    EXPECT_FALSE(goal.yaw.has_value());
+    EXPECT_DOUBLE_EQ(goal.positionTolerance, 0.01);
+
+    ASSERT_EQ(scene.primitives.size(), 2u);
+    EXPECT_EQ(scene.primitives[0].type, "transit");
+    EXPECT_TRUE(scene.primitives[0].params.empty());
+    EXPECT_EQ(scene.primitives[1].type, "push_mobile");
+    EXPECT_EQ(scene.primitives[1].params.at("standoff"), "0.41");
+
+    EXPECT_EQ(scene.planner, "mopl");
+    const std::vector<std::pair<std::string, std::string>> params{{"connect_step", "0.05"},
+                                                                  {"vertex_step", "0.35"},
+                                                                  {"moving_object_penalty", "0.6"},
+                                                                  {"move_to_object_penalty", "0.1"},
+                                                                  {"move_to_object_factor", "1.0"}};
+    ASSERT_EQ(scene.plannerParams.size(), params.size());
+    for (std::size_t i = 0; i < params.size(); ++i)
+    {
+        EXPECT_EQ(scene.plannerParams[i].name, params[i].first);
+        EXPECT_EQ(scene.plannerParams[i].value, params[i].second);
+    }
+}
+
+TEST(SceneLoader, AnglesInDegreesOrRadians)
+{
+    std::vector<std::string> lines = replaced(
+        3,
+        R"(  <obstacle name="block"><origin xyz="1 1 0.5" rpy="0 0 90deg"/><box size="1 1 1"/></obstacle>)");
+    lines.at(7) = R"(    <object name="obj1" xyz="-1 0 0" yaw="0.5"/>)";
+    lines.at(10) = R"(    <object name="obj1" xyz="1 * *" yaw="-45deg" yaw_tolerance="2deg"/>)";
+    const Scene scene = parseLines(lines);
+
+    // rpy = (0, 0, 90 degrees) turns x onto y
+    const Eigen::Vector3d turned = scene.obstacles[0].pose.linear() * Eigen::Vector3d::UnitX();
+    EXPECT_TRUE(turned.isApprox(Eigen::Vector3d::UnitY())) << turned.transpose();
+    EXPECT_DOUBLE_EQ(scene.objects[0].start.yaw, 0.5);
+    EXPECT_DOUBLE_EQ(*scene.objectGoals[0].yaw, -PI / 4.0);
+    EXPECT_DOUBLE_EQ(scene.objectGoals[0].yawTolerance, 2.0 * PI / 180.0);
+}
+
+TEST(SceneLoader, RpyComposesLikeUrdf)
+{
+    const Scene scene = parseLines(replaced(
+        3, R"(  <obstacle name="block"><origin rpy="0.3 -0.2 1.1"/><box size="1 1 1"/></obstacle>)"));
+    const Eigen::Matrix3d expected =
+        (Eigen::AngleAxisd(1.1, Eigen::Vector3d::UnitZ()) *
+         Eigen::AngleAxisd(-0.2, Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()))
+            .toRotationMatrix();
+    EXPECT_TRUE(scene.obstacles[0].pose.linear().isApprox(expected));
+    EXPECT_TRUE(scene.obstacles[0].pose.translation().isZero());
+}
+
+TEST(SceneLoader, DefaultsWhenOptionalPartsAreAbsent)
+{
+    const Scene scene = parseLines(replaced(1, "<scene>"), "/some/dir/kitchen.xml");
+    EXPECT_EQ(scene.name, "kitchen");
+    EXPECT_DOUBLE_EQ(scene.timeLimit, 60.0);
+    EXPECT_EQ(scene.planner, "mopl");
+    EXPECT_TRUE(scene.plannerParams.empty());
+    EXPECT_TRUE(scene.robot.basePose.isApprox(Eigen::Isometry3d::Identity()));
+    EXPECT_TRUE(scene.robotGoal.joints.empty());
+    const ObjectGoal &goal = scene.objectGoals.at(0);
+    EXPECT_FALSE(goal.yaw.has_value());
+    EXPECT_DOUBLE_EQ(goal.positionTolerance, 0.01);
+    EXPECT_DOUBLE_EQ(goal.yawTolerance, 0.05);
+}
+
+TEST(SceneLoader, NumbersParseCompletelyAndFinitely)
+{
+    EXPECT_EQ(parseNumber("-0.25"), -0.25);
+    EXPECT_EQ(parseNumber("+2e-3"), 2e-3);
+    EXPECT_FALSE(parseNumber("0.3abc"));
+    EXPECT_FALSE(parseNumber("nan"));
+    EXPECT_FALSE(parseNumber("inf"));
+    EXPECT_FALSE(parseNumber("1e999"));
+    EXPECT_FALSE(parseNumber(""));
+    EXPECT_DOUBLE_EQ(*parseAngle("180deg"), PI);
+    EXPECT_FALSE(parseAngle("deg"));
+    EXPECT_FALSE(parseAngle("90 deg"));
+}
+
+TEST(SceneLoader, MissingFileNamesTheFile)
+{
+    const std::string file = DATA_DIR + "/no_such_scene.xml";
+    const std::string message = errorOf([&] { loadScene(file); });
+    EXPECT_EQ(message.rfind(file + ": ", 0), 0u) << message;
+    EXPECT_NE(message.find("scene file not found"), std::string::npos) << message;
+}
+
+TEST(SceneLoader, MalformedXmlNamesFileAndLine)
+{
+    const std::string file = DATA_DIR + "/malformed.xml";
+    const std::string message = errorOf([&] { loadScene(file); });
+    EXPECT_EQ(message.rfind(file + ":5: ", 0), 0u) << message;
+    EXPECT_NE(message.find("XML syntax error"), std::string::npos) << message;
+    EXPECT_NE(message.find("<box>"), std::string::npos) << message;
+}
+
+TEST(SceneLoader, WrongRootElement)
+{
+    std::vector<std::string> lines = replaced(1, "<world>");
+    lines.back() = "</world>";
+    expectError(lines, 1, "the root element must be <scene>, found <world>");
+}
+
+TEST(SceneLoader, UnknownElement)
+{
+    expectError(replaced(3, R"(  <obstcle name="block"><box size="1 1 1"/></obstcle>)"), 3,
+                "unknown element <obstcle> in <scene>");
+}
+
+TEST(SceneLoader, UnknownAttribute)
+{
+    expectError(
+        replaced(4, R"(  <surface name="floor" height="0" min="-2.5 -2.5" max="2.5 2.5" colour="red"/>)"), 4,
+        "unknown attribute 'colour' on <surface>");
+}
+
+TEST(SceneLoader, MissingRequiredAttribute)
+{
+    expectError(replaced(4, R"(  <surface name="floor" min="-2.5 -2.5" max="2.5 2.5"/>)"), 4,
+                "missing required attribute 'height' on <surface>");
+}
+
+TEST(SceneLoader, MalformedNumber)
+{
+    for (const std::string bad : {"0.3abc", "nan", "inf"})
+        expectError(replaced(8, R"(    <object name="obj1" xyz="-1 )" + bad + R"( 0"/>)"), 8,
+                    "malformed number '" + bad + "' in attribute 'xyz' of <object>");
+}
+
+TEST(SceneLoader, WrongNumberOfValues)
+{
+    expectError(replaced(8, R"(    <object name="obj1" xyz="-1 0"/>)"), 8,
+                "attribute 'xyz' of <object> needs 3 values, got 2");
+}
+
+TEST(SceneLoader, NonPositiveSize)
+{
+    expectError(replaced(5, R"(  <object name="obj1"><cylinder radius="0" length="0.5"/></object>)"), 5,
+                "attribute 'radius' of <cylinder> must be positive");
+    expectError(replaced(3, R"(  <obstacle name="block"><box size="1 -1 1"/></obstacle>)"), 3,
+                "attribute 'size' of <box> must be positive");
+}
+
+TEST(SceneLoader, DuplicateName)
+{
+    expectError(replaced(5, R"(  <object name="block"><cylinder radius="0.2" length="0.5"/></object>)"), 5,
+                "duplicate name 'block' (first at line 3)");
+}
+
+TEST(SceneLoader, StartForUnknownObject)
+{
+    expectError(replaced(8, R"(    <object name="obj9" xyz="-1 0 0"/>)"), 8,
+                "start for unknown object 'obj9'");
+}
+
+TEST(SceneLoader, ObjectWithoutStart)
+{
+    // the error points at the object's declaration, the line to look at for its name
+    expectError(replaced(8, ""), 5, "object 'obj1' has no start");
+}
+
+TEST(SceneLoader, GoalForUnknownObject)
+{
+    expectError(replaced(11, R"(    <object name="obj2" xyz="1 * *"/>)"), 11,
+                "goal for unknown object 'obj2'");
+}
+
+TEST(SceneLoader, MissingUrdfNamesTheRobotLine)
+{
+    const std::string file = DATA_DIR + "/missing_urdf.xml";
+    const std::string message = errorOf([&] { loadScene(file); });
+    EXPECT_EQ(message.rfind(file + ":4: ", 0), 0u) << message;
+    EXPECT_NE(message.find("URDF file 'robots/no_such_robot.urdf' not found"), std::string::npos) << message;
+}
+
+TEST(SceneLoader, SurfaceMinNotBelowMax)
+{
+    expectError(replaced(4, R"(  <surface name="floor" height="0" min="-2.5 2.5" max="2.5 2.5"/>)"), 4,
+                "surface 'floor': min must be less than max");
+}
+
+TEST(SceneLoader, NegativeTolerance)
+{
+    expectError(replaced(11, R"(    <object name="obj1" xyz="1 * *" tolerance="-0.01"/>)"), 11,
+                "attribute 'tolerance' of <object> must not be negative");
+}
+
+TEST(SceneLoader, StartObjectOffEverySurface)
+{
+    expectError(replaced(8, R"(    <object name="obj1" xyz="-1 0 0.3"/>)"), 8,
+                "start of object 'obj1' does not rest on any <surface>");
+}
