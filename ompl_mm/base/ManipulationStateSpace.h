@@ -1,7 +1,7 @@
 /* The configuration space of a manipulation problem: the robot's joints times one upright pose
    (x, y, z, yaw) per movable object. Interpolation is mode-aware: an object held by the robot
-   (resting on no surface) moves with the tool frame, so any two consecutive waypoints of a
-   manipulation path interpolate the way the primitive moved them. */
+   (resting on no surface at either end of a motion) moves with the tool frame, so any two
+   consecutive waypoints of a manipulation path interpolate the way the primitive moved them. */
 #pragma once
 
 #include "ompl_mm/base/ManipulationModel.h"
@@ -61,9 +61,12 @@ namespace ompl_mm
         void printState(const ompl::base::State *state, std::ostream &out) const override;
 
     private:
-        /** Pose of a held object at interpolation time: it keeps its grasp relative to the tool. */
-        ObjectPose carriedPose(const ompl::base::State *anchor, const ompl::base::State *robotAt,
-                               unsigned int object) const;
+        /** True when the object moves between from and to and is held at either end. */
+        bool isCarried(const ompl::base::State *from, const ompl::base::State *to, unsigned int object) const;
+        /** Pose at time t of an object carried from one pose to another while the tool moves. */
+        static ObjectPose carriedPose(const ObjectPose &from, const ObjectPose &to,
+                                      const Eigen::Isometry3d &toolFrom, const Eigen::Isometry3d &toolTo,
+                                      const Eigen::Isometry3d &toolAt, double t);
 
         ManipulationModelPtr model_;
     };

@@ -49,6 +49,10 @@ namespace ompl_mm
             and its distance in *distance; -1 when the tree is empty. */
         int nearest(const ManipulationMetric::Query &query, double *distance) const;
 
+        /** Relative tolerance of nearest(): it returns a vertex within (1 + tolerance) times the
+            nearest distance; 0 makes it exact. */
+        void setNearestTolerance(double tolerance) { shrink_ = 1.0 / (1.0 + tolerance); }
+
         /** Indices from a root to vertex i (forward tree) or from vertex i to its root (backward). */
         std::vector<int> branch(int i) const;
 
@@ -95,5 +99,6 @@ namespace ompl_mm
         mutable std::vector<ManipulationMetric::ObjectCost> groupCosts_;
         mutable std::vector<double> groupBounds_;
         std::size_t roots_{0};
+        double shrink_{1.0};  ///< 1 / (1 + nearest tolerance)
     };
 }  // namespace ompl_mm

@@ -6,19 +6,40 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ompl_mm
 {
     namespace
     {
-        double excess(double value, const GoalCoordinate &target, double tolerance)
+        /** By how much a difference misses its tolerance: 0 within it, infinity for NaN. */
+        double excess(double difference, double tolerance)
         {
-            return target ? std::max(0.0, std::abs(value - *target) - tolerance) : 0.0;
+            const double miss = std::abs(difference) - tolerance;
+            if (std::isnan(miss))
+                return std::numeric_limits<double>::infinity();
+            return std::max(0.0, miss);
         }
 
-        double angleDifference(double a, double b)
+        double excess(double value, const GoalCoordinate &target, double tolerance)
         {
-            return std::abs(std::remainder(a - b, 2.0 * M_PI));
+            return target ? excess(value - *target, tolerance) : 0.0;
+        }
+
+        /** The surfaces on which an object can meet its goal's defined coordinates. */
+        std::vector<const SupportSurface *> surfacesFor(const ObjectGoal *goal, const Scene &scene)
+        {
+            const auto fits = [goal](int k, double low, double high) {
+                return !goal || !goal->position[k] ||
+                       (*goal->position[k] >= low && *goal->position[k] <= high);
+            };
+            std::vector<const SupportSurface *> surfaces;
+            for (const SupportSurface &s : scene.surfaces)
+                if (fits(0, s.min.x(), s.max.x()) && fits(1, s.min.y(), s.max.y()) &&
+                    fits(2, s.height - ManipulationModel::REST_TOLERANCE,
+                         s.height + ManipulationModel::REST_TOLERANCE))
+                    surfaces.push_back(&s);
+            return surfaces;
         }
     }  // namespace
 
@@ -48,17 +69,7 @@ namespace ompl_mm
             if (index < 0)
                 throw InputError(goal.where, "goal names unknown object '" + goal.object + "'");
             objects_[index] = &goal;
-            if (!goal.position[0] || !goal.position[1])
-                continue;
-            const double x = *goal.position[0], y = *goal.position[1];
-            const bool onSurface = std::any_of(
-                scene.surfaces.begin(), scene.surfaces.end(),
-                [&](const auto &s)
-                {
-                    return s.contains(x, y) && (!goal.position[2] || std::abs(*goal.position[2] - s.height) <
-                                                                         ManipulationModel::REST_TOLERANCE);
-                });
-            if (!onSurface)
+            if (surfacesFor(&goal, scene).empty())
                 throw InputError(goal.where, "goal of object '" + goal.object +
                                                  "' lies on no support surface, so it can never rest there");
         }
@@ -80,12 +91,16 @@ namespace ompl_mm
     {
         double distance = 0.0;
         const double *q = space_->robotValues(state);
+        if (!std::all_of(q, q + space_->robotDimension(), [](double v) { return std::isfinite(v); }))
+            return std::numeric_limits<double>::infinity();
         for (std::size_t j = 0; j < robot_.joints.size(); ++j)
             distance = std::max(distance, excess(q[j], robot_.joints[j], robot_.tolerance));
         double unsupported = 0.0;
         for (unsigned int i = 0; i < space_->objectCount(); ++i)
         {
             const ObjectPose pose = space_->objectPose(state, i);
+            if (!pose.position.allFinite() || !std::isfinite(pose.yaw))
+                return std::numeric_limits<double>::infinity();
             if (space_->model()->restingSurface(pose.position) < 0)
                 unsupported += 1.0;
             const ObjectGoal *goal = objects_[i];
@@ -96,7 +111,7 @@ namespace ompl_mm
                     std::max(distance, excess(pose.position[k], goal->position[k], goal->positionTolerance));
             if (goal->yaw)
                 distance = std::max(
-                    distance, std::max(0.0, angleDifference(pose.yaw, *goal->yaw) - goal->yawTolerance));
+                    distance, excess(std::remainder(pose.yaw - *goal->yaw, 2.0 * M_PI), goal->yawTolerance));
         }
         return distance + unsupported;
     }
@@ -119,18 +134,7 @@ namespace ompl_mm
     {
         const Scene &scene = space_->model()->scene();
         const ObjectGoal *goal = objects_[object];
-        std::vector<const SupportSurface *> candidates;
-        for (const SupportSurface &s : scene.surfaces)
-        {
-            const bool xFits = !goal || !goal->position[0] ||
-                               (*goal->position[0] >= s.min.x() && *goal->position[0] <= s.max.x());
-            const bool yFits = !goal || !goal->position[1] ||
-                               (*goal->position[1] >= s.min.y() && *goal->position[1] <= s.max.y());
-            const bool zFits = !goal || !goal->position[2] ||
-                               std::abs(*goal->position[2] - s.height) < ManipulationModel::REST_TOLERANCE;
-            if (xFits && yFits && zFits)
-                candidates.push_back(&s);
-        }
+        const std::vector<const SupportSurface *> candidates = surfacesFor(goal, scene);
         if (fromSample && space_->model()->restingSurface(fromSample->position) >= 0)
         {
             pose = *fromSample;

@@ -87,7 +87,8 @@ namespace ompl_mm
             cost += approachCost(std::sqrt(nearest));
             tool = to.objects[next];
         }
-        return cost + (targetTool - tool).norm();
+        cost += (targetTool - tool).norm();
+        return cost < cutoff ? cost : std::numeric_limits<double>::infinity();
     }
 
     double ManipulationMetric::approachCost(double distance) const

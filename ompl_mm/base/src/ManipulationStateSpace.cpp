@@ -164,14 +164,34 @@ namespace ompl_mm
         }
     }
 
-    ObjectPose ManipulationStateSpace::carriedPose(const ob::State *anchor, const ob::State *robotAt,
-                                                   unsigned int object) const
+    bool ManipulationStateSpace::isCarried(const ob::State *from, const ob::State *to,
+                                           unsigned int object) const
     {
-        const ObjectPose pose = objectPose(anchor, object);
-        Eigen::Isometry3d objectFrame = Eigen::Isometry3d::Identity();
-        objectFrame.translate(pose.position).rotate(Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()));
-        const Eigen::Isometry3d grasp = model_->toolFrame(robotValues(anchor)).inverse() * objectFrame;
-        const Eigen::Isometry3d carried = model_->toolFrame(robotValues(robotAt)) * grasp;
+        return objectMoves(from, to, object) &&
+               (restingSurface(from, object) < 0 || restingSurface(to, object) < 0);
+    }
+
+    ObjectPose ManipulationStateSpace::carriedPose(const ObjectPose &from, const ObjectPose &to,
+                                                   const Eigen::Isometry3d &toolFrom,
+                                                   const Eigen::Isometry3d &toolTo,
+                                                   const Eigen::Isometry3d &toolAt, double t)
+    {
+        const auto frame = [](const ObjectPose &pose)
+        {
+            Eigen::Isometry3d f = Eigen::Isometry3d::Identity();
+            f.translate(pose.position).rotate(Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()));
+            return f;
+        };
+        // the grasp (object in the tool frame) moves linearly from one end's to the other's, so
+        // interpolating in two steps equals one step; a primitive keeps one grasp along a segment
+        const Eigen::Isometry3d graspFrom = toolFrom.inverse() * frame(from);
+        const Eigen::Isometry3d graspTo = toolTo.inverse() * frame(to);
+        Eigen::Isometry3d grasp = Eigen::Isometry3d::Identity();
+        grasp.translation() = (1.0 - t) * graspFrom.translation() + t * graspTo.translation();
+        grasp.linear() = Eigen::Quaterniond(graspFrom.linear())
+                             .slerp(t, Eigen::Quaterniond(graspTo.linear()))
+                             .toRotationMatrix();
+        const Eigen::Isometry3d carried = toolAt * grasp;
         // the object stays upright: keep only the rotation about the vertical
         const Eigen::Vector3d xAxis = carried.linear().col(0);
         return {carried.translation(), std::atan2(xAxis.y(), xAxis.x())};
@@ -180,15 +200,27 @@ namespace ompl_mm
     void ManipulationStateSpace::interpolate(const ob::State *from, const ob::State *to, double t,
                                              ob::State *state) const
     {
+        // read everything carrying needs before writing: state may be from or to
+        bool carries = false;
+        for (unsigned int i = 0; i < objectCount() && !carries; ++i)
+            carries = isCarried(from, to, i);
+        Eigen::Isometry3d toolFrom, toolTo;
+        if (carries)
+        {
+            toolFrom = model_->toolFrame(robotValues(from));
+            toolTo = model_->toolFrame(robotValues(to));
+        }
         getSubspace(0)->interpolate(from->as<StateType>()->components[0], to->as<StateType>()->components[0],
                                     t, state->as<StateType>()->components[0]);
+        const Eigen::Isometry3d toolAt =
+            carries ? model_->toolFrame(robotValues(state)) : Eigen::Isometry3d();
         for (unsigned int i = 0; i < objectCount(); ++i)
         {
-            const bool heldAtFrom = restingSurface(from, i) < 0;
-            const bool heldAtTo = restingSurface(to, i) < 0;
-            if (objectMoves(from, to, i) && (heldAtFrom || heldAtTo))
+            if (carries && isCarried(from, to, i))
             {
-                setObjectPose(state, i, carriedPose(heldAtFrom ? from : to, state, i));
+                setObjectPose(
+                    state, i,
+                    carriedPose(objectPose(from, i), objectPose(to, i), toolFrom, toolTo, toolAt, t));
                 continue;
             }
             for (unsigned int index : {positionIndex(i), yawIndex(i)})

@@ -2,6 +2,9 @@
 
 #include <ompl/base/SpaceInformation.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace ompl_mm
 {
     ManipulationValidityChecker::ManipulationValidityChecker(const ompl::base::SpaceInformationPtr &si)
@@ -31,7 +34,18 @@ namespace ompl_mm
 
     bool ManipulationValidityChecker::check(const ompl::base::State *state, std::string *reason) const
     {
+        // NaN or infinity would slip through every comparison below
         const double *q = space_->robotValues(state);
+        bool finite = std::all_of(q, q + space_->robotDimension(), [](double v) { return std::isfinite(v); });
+        for (unsigned int i = 0; i < space_->objectCount() && finite; ++i)
+            finite =
+                space_->objectPosition(state, i).allFinite() && std::isfinite(space_->objectYaw(state, i));
+        if (!finite)
+        {
+            if (reason)
+                *reason = "the state has a non-finite value";
+            return false;
+        }
         const RobotModel &robot = space_->model()->robot();
         for (unsigned int i = 0; i < robot.dof(); ++i)
         {

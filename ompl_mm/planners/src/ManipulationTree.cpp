@@ -87,13 +87,15 @@ namespace ompl_mm
         const Group &group = groups_[g];
         for (const Block &block : group.blocks)
         {
-            if (group.blocks.size() > 1 && lowerBound(g, block.bounds, query, queryJoints) >= *bestDistance)
+            if (group.blocks.size() > 1 &&
+                lowerBound(g, block.bounds, query, queryJoints) >= *bestDistance * shrink_)
                 continue;
             for (std::size_t m = block.begin; m < block.end; ++m)
             {
                 const int i = group.members[m];
-                const double d = metric_->distance(vertices_[i].point, query, groupCosts_[g], *bestDistance);
-                if (d < *bestDistance)
+                const double d =
+                    metric_->distance(vertices_[i].point, query, groupCosts_[g], *bestDistance * shrink_);
+                if (d < *bestDistance * shrink_)
                 {
                     *bestDistance = d;
                     *best = i;
@@ -122,7 +124,7 @@ namespace ompl_mm
         if (!groups_.empty())
             scanGroup(first, query, queryJoints, &best, &bestDistance);
         for (std::size_t g = 0; g < groups_.size(); ++g)
-            if (g != first && groupBounds_[g] < bestDistance)
+            if (g != first && groupBounds_[g] < bestDistance * shrink_)
                 scanGroup(g, query, queryJoints, &best, &bestDistance);
         if (distance)
             *distance = bestDistance;

@@ -46,6 +46,8 @@ namespace ompl_mm
 
     void Trajectory::truncate(std::size_t count)
     {
+        if (count >= states_.size())
+            return;
         while (states_.size() > count)
         {
             space_->freeState(states_.back());

@@ -1,0 +1,234 @@
+// Tests for ManipulationGoal.
+#include "ompl_mm/base/ManipulationGoal.h"
+#include "ompl_mm/geometric/ManipulationSetup.h"
+#include "ompl_mm/scene/InputError.h"
+#include "ompl_mm/scene/SceneLoader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+using namespace ompl_mm;
+namespace ob = ompl::base;
+
+namespace
+{
+    constexpr unsigned int OBJ1 = 0, OBJ3 = 2;
+
+    Scene mobileBlocked()
+    {
+        return loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
+    }
+
+    class MobileGoal : public ::testing::Test
+    {
+    protected:
+        MobileGoal()
+            : setup_(mobileBlocked()), space_(*setup_.manipulationSpace()), goal_(*setup_.manipulationGoal())
+        {
+            state_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
+        }
+        ~MobileGoal() override { space_.freeState(state_); }
+
+        /** The start with the robot and obj3 moved to their goals. */
+        void makeGoalState()
+        {
+            space_.robotValues(state_)[0] = 0.0;
+            space_.robotValues(state_)[1] = 0.0;
+            space_.setObjectPose(state_, OBJ3, {Eigen::Vector3d(-0.9, -0.9, 0.0), 0.0});
+        }
+
+        ManipulationSetup setup_;
+        const ManipulationStateSpace &space_;
+        const ManipulationGoal &goal_;
+        ob::State *state_;
+    };
+
+    /** The message of the InputError that building a setup for scene throws, or "" when none. */
+    std::string setupError(const Scene &scene)
+    {
+        try
+        {
+            ManipulationSetup setup(scene);
+        }
+        catch (const InputError &e)
+        {
+            return e.what();
+        }
+        return "";
+    }
+
+    bool startsWith(const std::string &text, const std::string &prefix)
+    {
+        return text.compare(0, prefix.size(), prefix) == 0;
+    }
+}  // namespace
+
+TEST_F(MobileGoal, StartIsNotSatisfied)
+{
+    EXPECT_FALSE(goal_.isSatisfied(state_));
+    // the robot misses by |1.9| - tolerance, obj3 by |-1.5 + 0.9| - tolerance: the largest counts
+    EXPECT_NEAR(goal_.distanceGoal(state_), 1.9 - 0.01, 1e-12);
+    EXPECT_TRUE(goal_.constrainsRobot());
+    EXPECT_TRUE(goal_.constrainsObject(OBJ3));
+    EXPECT_FALSE(goal_.constrainsObject(OBJ1));
+}
+
+TEST_F(MobileGoal, RobotAndObj3AtTheirTargetsSatisfy)
+{
+    makeGoalState();
+    double distance = -1.0;
+    EXPECT_TRUE(goal_.isSatisfied(state_, &distance));
+    EXPECT_EQ(distance, 0.0);
+    // other objects anywhere on the floor, any yaw of obj3, within tolerance
+    space_.setObjectPose(state_, OBJ1, {Eigen::Vector3d(2.2, -2.2, 0.0), 1.0});
+    space_.setObjectPose(state_, OBJ3, {Eigen::Vector3d(-0.905, -0.895, 0.0), -2.0});
+    space_.robotValues(state_)[0] = 0.009;
+    EXPECT_TRUE(goal_.isSatisfied(state_));
+}
+
+TEST_F(MobileGoal, DistanceIsTheExcessOverTolerance)
+{
+    makeGoalState();
+    space_.robotValues(state_)[0] = 0.02;
+    EXPECT_FALSE(goal_.isSatisfied(state_));
+    EXPECT_NEAR(goal_.distanceGoal(state_), 0.02 - 0.01, 1e-12);
+    space_.setObjectPose(state_, OBJ3, {Eigen::Vector3d(-0.9, -0.95, 0.0), 0.0});
+    EXPECT_NEAR(goal_.distanceGoal(state_), 0.05 - 0.01, 1e-12);  // the larger excess
+}
+
+TEST_F(MobileGoal, LiftedObjectIsNotSatisfied)
+{
+    makeGoalState();
+    space_.setObjectPose(state_, OBJ3, {Eigen::Vector3d(-0.9, -0.9, 0.3), 0.0});
+    EXPECT_FALSE(goal_.isSatisfied(state_));
+    EXPECT_NEAR(goal_.distanceGoal(state_), 1.0, 1e-12);  // z is don't-care; 1 per unsupported object
+    makeGoalState();
+    space_.setObjectPose(state_, OBJ1, {Eigen::Vector3d(1.0, 1.0, 0.3), 0.0});
+    EXPECT_FALSE(goal_.isSatisfied(state_));
+}
+
+TEST_F(MobileGoal, CompleteAllUndefinedGivesAGoalState)
+{
+    PartialState sample(&space_);
+    sample.setRobotDefined(false);
+    for (unsigned int i = 0; i < space_.objectCount(); ++i)
+        sample.setObjectDefined(i, false);
+    ompl::RNG rng;
+    rng.setLocalSeed(3);
+    ob::State *out = space_.allocState();
+    for (int trial = 0; trial < 20; ++trial)
+    {
+        goal_.complete(sample, out, rng);
+        EXPECT_DOUBLE_EQ(space_.robotValues(out)[0], 0.0);
+        EXPECT_DOUBLE_EQ(space_.robotValues(out)[1], 0.0);
+        const ObjectPose obj3 = space_.objectPose(out, OBJ3);
+        EXPECT_EQ(obj3.position, Eigen::Vector3d(-0.9, -0.9, 0.0));
+        EXPECT_DOUBLE_EQ(obj3.yaw, 0.0);  // the start yaw
+        for (unsigned int i = 0; i < space_.objectCount(); ++i)
+        {
+            const Eigen::Vector3d p = space_.objectPosition(out, i);
+            EXPECT_EQ(p.z(), 0.0);
+            EXPECT_LE(std::abs(p.x()), 2.5);
+            EXPECT_LE(std::abs(p.y()), 2.5);
+        }
+        EXPECT_TRUE(goal_.isSatisfied(out));
+    }
+    space_.freeState(out);
+}
+
+TEST_F(MobileGoal, CompleteKeepsDefinedPartsTheGoalLeavesFree)
+{
+    PartialState sample(&space_);
+    space_.copyState(sample.state(), state_);
+    space_.setObjectPose(sample.state(), OBJ1, {Eigen::Vector3d(1.0, 1.0, 0.0), 0.0});
+    space_.setObjectPose(sample.state(), OBJ3, {Eigen::Vector3d(0.5, 0.5, 0.0), 0.0});
+    space_.robotValues(sample.state())[0] = 1.0;
+    for (unsigned int i = 1; i < space_.objectCount(); ++i)
+        sample.setObjectDefined(i, i == OBJ3);
+    ompl::RNG rng;
+    rng.setLocalSeed(4);
+    ob::State *out = space_.allocState();
+    goal_.complete(sample, out, rng);
+    EXPECT_EQ(space_.objectPosition(out, OBJ1), Eigen::Vector3d(1.0, 1.0, 0.0));
+    // the goal wins where it defines a coordinate
+    EXPECT_EQ(space_.objectPosition(out, OBJ3), Eigen::Vector3d(-0.9, -0.9, 0.0));
+    EXPECT_DOUBLE_EQ(space_.robotValues(out)[0], 0.0);
+    EXPECT_TRUE(goal_.isSatisfied(out));
+
+    // a defined object that rests nowhere is replaced by one on the floor
+    space_.setObjectPose(sample.state(), OBJ1, {Eigen::Vector3d(1.0, 1.0, 0.3), 0.0});
+    goal_.complete(sample, out, rng);
+    EXPECT_GE(space_.restingSurface(out, OBJ1), 0);
+    EXPECT_TRUE(goal_.isSatisfied(out));
+    space_.freeState(out);
+}
+
+TEST_F(MobileGoal, NanCoordinateIsNotSatisfied)
+{
+    makeGoalState();
+    space_.robotValues(state_)[0] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_FALSE(goal_.isSatisfied(state_));
+    EXPECT_GT(goal_.distanceGoal(state_), 0.0);
+}
+
+TEST_F(MobileGoal, YawGoalUsesTheShortAngle)
+{
+    Scene scene = mobileBlocked();
+    scene.objectGoals[0].yaw = 3.1;
+    ManipulationSetup setup(scene);
+    const ManipulationStateSpace &space = *setup.manipulationSpace();
+    ob::State *s = space.cloneState(state_);
+    space.robotValues(s)[0] = space.robotValues(s)[1] = 0.0;
+    space.setObjectPose(s, OBJ3, {Eigen::Vector3d(-0.9, -0.9, 0.0), -3.1});
+    // -3.1 and 3.1 are 2 pi - 6.2 apart
+    EXPECT_NEAR(setup.manipulationGoal()->distanceGoal(s), (2 * M_PI - 6.2) - 0.05, 1e-9);
+    space.freeState(s);
+}
+
+TEST(ManipulationGoalInput, ImpossibleGoalsThrowWithTheSceneLine)
+{
+    const Scene base = mobileBlocked();
+    const std::string robotLine = base.robotGoal.where.str() + ": ";
+    const std::string objectLine = base.objectGoals.at(0).where.str() + ": ";
+    ASSERT_GT(base.robotGoal.where.line, 0);
+
+    Scene scene = base;
+    scene.robotGoal.joints = {3.0, 0.0};
+    std::string what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, robotLine)) << what;
+    EXPECT_NE(what.find("'x'"), std::string::npos) << what;
+
+    scene = base;
+    scene.robotGoal.joints = {0.0};
+    what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, robotLine)) << what;
+    EXPECT_NE(what.find("1 joint values"), std::string::npos) << what;
+
+    scene = base;
+    scene.objectGoals[0].position = {3.0, 3.0, std::nullopt};
+    what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, objectLine)) << what;
+    EXPECT_NE(what.find("obj3"), std::string::npos) << what;
+
+    scene = base;
+    scene.objectGoals[0].object = "obj9";
+    what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, objectLine)) << what;
+    EXPECT_NE(what.find("obj9"), std::string::npos) << what;
+}
+
+TEST(ManipulationGoalInput, GoalOffEverySurfaceInOneCoordinateThrows)
+{
+    // x = 3 lies beyond the floor whatever y is; z = 0.5 is the height of no surface
+    Scene scene = mobileBlocked();
+    scene.objectGoals[0].position = {3.0, std::nullopt, std::nullopt};
+    const std::string line = scene.objectGoals[0].where.str() + ": ";
+    std::string what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, line)) << "no InputError for x = 3: '" << what << "'";
+    scene.objectGoals[0].position = {std::nullopt, std::nullopt, 0.5};
+    what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, line)) << "no InputError for z = 0.5: '" << what << "'";
+}

@@ -1,0 +1,165 @@
+// Tests for ManipulationPath.
+#include "ompl_mm/geometric/ManipulationPath.h"
+#include "ompl_mm/geometric/ManipulationSetup.h"
+#include "ompl_mm/scene/SceneLoader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace ompl_mm;
+namespace ob = ompl::base;
+
+namespace
+{
+    const SegmentLabel TRANSIT{PrimitiveKind::Transit, -1};
+    SegmentLabel push(int object)
+    {
+        return {PrimitiveKind::Push, object};
+    }
+
+    class MobilePath : public ::testing::Test
+    {
+    protected:
+        MobilePath()
+            : setup_(loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml")),
+              si_(setup_.getSpaceInformation()),
+              space_(*setup_.manipulationSpace()),
+              path_(si_)
+        {
+            si_->setup();
+            state_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
+        }
+        ~MobilePath() override { space_.freeState(state_); }
+
+        /** state_ with the robot moved to (x, y); returns it for appending. */
+        const ob::State *robotAt(double x, double y)
+        {
+            space_.robotValues(state_)[0] = x;
+            space_.robotValues(state_)[1] = y;
+            return state_;
+        }
+        const ob::State *objectAt(unsigned int i, double x, double y)
+        {
+            space_.setObjectPose(state_, i, {Eigen::Vector3d(x, y, 0.0), 0.0});
+            return state_;
+        }
+        double robotX(std::size_t i) const { return space_.robotValues(path_.getState(i))[0]; }
+
+        ManipulationSetup setup_;
+        ob::SpaceInformationPtr si_;
+        const ManipulationStateSpace &space_;
+        ManipulationPath path_;
+        ob::State *state_;
+    };
+}  // namespace
+
+TEST_F(MobilePath, AppendFirstThenLabelled)
+{
+    EXPECT_THROW(path_.appendLabelled(state_, TRANSIT), ompl::Exception);
+    path_.appendFirst(state_);
+    EXPECT_THROW(path_.appendFirst(state_), ompl::Exception);
+    path_.appendLabelled(robotAt(1.0, 1.9), TRANSIT);
+    path_.appendLabelled(objectAt(3, 0.9, 1.9), push(3));
+    ASSERT_EQ(path_.getStateCount(), 3u);
+    ASSERT_EQ(path_.labels().size(), 2u);
+    EXPECT_EQ(path_.label(0), TRANSIT);
+    EXPECT_EQ(path_.label(1), push(3));
+    EXPECT_NE(path_.getState(2), state_);  // copies
+    EXPECT_TRUE(space_.equalStates(path_.getState(2), state_));
+}
+
+TEST_F(MobilePath, ShortcutRemovesStatesAndLabels)
+{
+    path_.appendFirst(robotAt(1.9, 1.9));
+    for (int i = 1; i <= 5; ++i)
+        path_.appendLabelled(robotAt(1.9 - 0.2 * i, 1.9), i == 5 ? push(1) : TRANSIT);
+    // 6 states, labels T T T T P
+    path_.shortcut(1, 4);
+    ASSERT_EQ(path_.getStateCount(), 4u);
+    ASSERT_EQ(path_.labels().size(), 3u);
+    EXPECT_NEAR(robotX(0), 1.9, 1e-12);
+    EXPECT_NEAR(robotX(1), 1.7, 1e-12);
+    EXPECT_NEAR(robotX(2), 1.1, 1e-12);
+    EXPECT_NEAR(robotX(3), 0.9, 1e-12);
+    EXPECT_EQ(path_.labels(), (std::vector<SegmentLabel>{TRANSIT, TRANSIT, push(1)}));
+    // nothing to remove between neighbours
+    path_.shortcut(1, 2);
+    path_.shortcut(2, 2);
+    EXPECT_EQ(path_.getStateCount(), 4u);
+    EXPECT_EQ(path_.labels().size(), 3u);
+}
+
+TEST_F(MobilePath, RemoveRepeatedStatesKeepsTheLabelOfTheMotion)
+{
+    // A A B B B C, labels l0..l4: the zero-length segments go with their labels
+    path_.appendFirst(robotAt(1.9, 1.9));
+    path_.appendLabelled(robotAt(1.9, 1.9), push(0));
+    path_.appendLabelled(robotAt(1.0, 1.9), TRANSIT);
+    path_.appendLabelled(robotAt(1.0, 1.9), push(2));
+    path_.appendLabelled(robotAt(1.0, 1.9), push(3));
+    path_.appendLabelled(objectAt(1, 1.0, 0.0), push(1));
+    path_.removeRepeatedStates();
+    ASSERT_EQ(path_.getStateCount(), 3u);
+    EXPECT_EQ(path_.labels(), (std::vector<SegmentLabel>{TRANSIT, push(1)}));
+    EXPECT_NEAR(robotX(1), 1.0, 1e-12);
+    EXPECT_EQ(path_.checkLabels(), "");
+}
+
+TEST_F(MobilePath, ToolPathLengthOfStraightAndBentPaths)
+{
+    path_.appendFirst(robotAt(1.9, 1.9));
+    path_.appendLabelled(robotAt(0.9, 1.9), TRANSIT);
+    EXPECT_NEAR(path_.toolPathLength(), 1.0, 1e-9);
+    // an L: 1 m west then 0.6 m south, plus a diagonal leg back
+    path_.appendLabelled(robotAt(0.9, 1.3), TRANSIT);
+    EXPECT_NEAR(path_.toolPathLength(), 1.6, 1e-9);
+    path_.appendLabelled(robotAt(1.9, 1.9), TRANSIT);
+    EXPECT_NEAR(path_.toolPathLength(), 1.6 + std::hypot(1.0, 0.6), 1e-9);
+}
+
+TEST_F(MobilePath, ToolPathLengthOfASingleStateIsZero)
+{
+    EXPECT_EQ(path_.toolPathLength(), 0.0);
+    path_.appendFirst(state_);
+    EXPECT_EQ(path_.toolPathLength(), 0.0);
+}
+
+TEST_F(MobilePath, PrimitiveCountsCountRuns)
+{
+    path_.appendFirst(state_);
+    const std::vector<SegmentLabel> labels{TRANSIT, TRANSIT, push(1), push(1),
+                                           TRANSIT, push(3), push(1), TRANSIT};
+    double x = 1.9;
+    for (const SegmentLabel &label : labels)
+        path_.appendLabelled(robotAt(x -= 0.1, 1.9), label);
+    const auto counts = path_.primitiveCounts();
+    EXPECT_EQ(counts.at("transit"), 3u);
+    EXPECT_EQ(counts.at("push"), 3u);  // push(1) twice, then push(3), then push(1) again
+    EXPECT_EQ(counts.at("pickup"), 0u);
+    EXPECT_EQ(counts.at("transfer"), 0u);
+    EXPECT_EQ(counts.size(), 4u);
+}
+
+TEST_F(MobilePath, CheckLabelsFindsObjectsMovedOutsideTheirPush)
+{
+    path_.appendFirst(state_);
+    path_.appendLabelled(robotAt(1.0, 1.9), TRANSIT);
+    path_.appendLabelled(objectAt(1, 1.0, 0.0), push(1));
+    EXPECT_EQ(path_.checkLabels(), "");
+
+    path_.appendLabelled(objectAt(1, 1.2, 0.0), TRANSIT);  // segment 2 moves obj2 under a transit
+    const std::string fault = path_.checkLabels();
+    EXPECT_NE(fault.find("segment 2"), std::string::npos) << fault;
+    EXPECT_NE(fault.find("transit"), std::string::npos) << fault;
+    EXPECT_NE(fault.find("'obj2'"), std::string::npos) << fault;
+}
+
+TEST_F(MobilePath, CheckLabelsFindsAPushOfTheWrongObject)
+{
+    path_.appendFirst(state_);
+    path_.appendLabelled(objectAt(3, 0.9, 1.9), push(1));  // obj4 moves under a push of obj2
+    const std::string fault = path_.checkLabels();
+    EXPECT_NE(fault.find("segment 0"), std::string::npos) << fault;
+    EXPECT_NE(fault.find("'obj4'"), std::string::npos) << fault;
+}

@@ -1,0 +1,214 @@
+// Tests for ManipulationSetup.
+#include "ompl_mm/geometric/ManipulationSetup.h"
+#include "ompl_mm/primitives/PushMobile.h"
+#include "ompl_mm/scene/InputError.h"
+#include "ompl_mm/scene/SceneLoader.h"
+
+#include <gtest/gtest.h>
+
+using namespace ompl_mm;
+namespace ob = ompl::base;
+
+namespace
+{
+    Scene mobileBlocked()
+    {
+        return loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
+    }
+
+    /** The InputError message of building a setup for scene, or "" when it builds. */
+    std::string setupError(const Scene &scene)
+    {
+        try
+        {
+            ManipulationSetup setup(scene);
+        }
+        catch (const InputError &e)
+        {
+            return e.what();
+        }
+        return "";
+    }
+
+    bool startsWith(const std::string &text, const std::string &prefix)
+    {
+        return text.compare(0, prefix.size(), prefix) == 0;
+    }
+    bool has(const std::string &text, const std::string &part)
+    {
+        return text.find(part) != std::string::npos;
+    }
+}  // namespace
+
+TEST(ManipulationSetup, BuildsMobileBlocked)
+{
+    const Scene scene = mobileBlocked();
+    ManipulationSetup setup(scene);
+    ASSERT_TRUE(setup.model());
+    EXPECT_EQ(setup.model()->objectCount(), 4u);
+    EXPECT_EQ(setup.model()->dof(), 2u);
+    EXPECT_EQ(setup.getStateSpace(), setup.manipulationSpace());
+    EXPECT_EQ(setup.getStateValidityChecker(), setup.validityChecker());
+    EXPECT_EQ(setup.getGoal(), setup.manipulationGoal());
+    EXPECT_EQ(setup.getPlanner(), setup.mopl());
+    ASSERT_EQ(setup.mopl()->getPrimitives().size(), 2u);
+    EXPECT_EQ(setup.mopl()->getPrimitives()[0]->name(), "transit");
+    const auto push = std::dynamic_pointer_cast<PushMobile>(setup.mopl()->getPrimitives()[1]);
+    ASSERT_TRUE(push);
+    EXPECT_DOUBLE_EQ(push->standoff(), 0.41);
+}
+
+TEST(ManipulationSetup, StartStateIsTheScenes)
+{
+    const Scene scene = mobileBlocked();
+    ManipulationSetup setup(scene);
+    ASSERT_EQ(setup.getProblemDefinition()->getStartStateCount(), 1u);
+    const ob::State *start = setup.getProblemDefinition()->getStartState(0);
+    const ManipulationStateSpace &space = *setup.manipulationSpace();
+    EXPECT_EQ(space.robotValues(start)[0], scene.robotStart[0]);
+    EXPECT_EQ(space.robotValues(start)[1], scene.robotStart[1]);
+    for (unsigned int i = 0; i < 4; ++i)
+    {
+        EXPECT_EQ(space.objectPosition(start, i), scene.objects[i].start.position) << i;
+        EXPECT_EQ(space.objectYaw(start, i), scene.objects[i].start.yaw) << i;
+    }
+    EXPECT_TRUE(setup.validityChecker()->isValid(start));
+    EXPECT_FALSE(setup.manipulationGoal()->isSatisfied(start));
+}
+
+TEST(ManipulationSetup, PlannerParametersAreApplied)
+{
+    ManipulationSetup setup(mobileBlocked());
+    EXPECT_DOUBLE_EQ(setup.mopl()->getConnectStep(), 0.05);
+    EXPECT_DOUBLE_EQ(setup.mopl()->getVertexStep(), 0.35);
+    EXPECT_DOUBLE_EQ(setup.mopl()->metricWeights().movingObjectPenalty, 0.6);
+    EXPECT_DOUBLE_EQ(setup.mopl()->metricWeights().moveToObjectPenalty, 0.1);
+    EXPECT_DOUBLE_EQ(setup.mopl()->metricWeights().moveToObjectFactor, 1.0);
+
+    // the connect step is the collision resolution: 20 steps for a 1 m robot motion
+    setup.setup();
+    const ManipulationStateSpace &space = *setup.manipulationSpace();
+    ob::State *a = space.cloneState(setup.getProblemDefinition()->getStartState(0));
+    ob::State *b = space.cloneState(a);
+    space.robotValues(b)[0] -= 1.0;
+    EXPECT_NEAR(space.validSegmentCount(a, b), 1.0 / 0.05, 1.0);
+    space.freeState(a);
+    space.freeState(b);
+}
+
+TEST(ManipulationSetup, NoSolutionBeforeSolving)
+{
+    ManipulationSetup setup(mobileBlocked());
+    EXPECT_THROW(setup.manipulationPath(), ompl::Exception);
+}
+
+TEST(ManipulationSetupInput, StartJointCountIsReportedAtTheStartLine)
+{
+    Scene scene = mobileBlocked();
+    ASSERT_GT(scene.robotStartWhere.line, 0);
+    scene.robotStart = {1.9};
+    const std::string what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, scene.robotStartWhere.str() + ": ")) << what;
+    EXPECT_TRUE(has(what, "1 joint values")) << what;
+    EXPECT_TRUE(has(what, "2 moving joints")) << what;
+}
+
+TEST(ManipulationSetupInput, StartInCollisionNamesTheBodies)
+{
+    Scene scene = mobileBlocked();
+    scene.robotStart = {-1.0, 0.0};  // inside block1
+    const std::string what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, scene.robotStartWhere.str() + ": ")) << what;
+    EXPECT_TRUE(has(what, "block1")) << what;
+    EXPECT_TRUE(has(what, "robot link 'body'")) << what;
+
+    scene = mobileBlocked();
+    scene.objects[3].start.position = Eigen::Vector3d(1.9, 1.7, 0.0);  // obj4 under the robot
+    const std::string objects = setupError(scene);
+    EXPECT_TRUE(has(objects, "obj4")) << objects;
+}
+
+TEST(ManipulationSetupInput, StartJointOutsideLimitsIsReported)
+{
+    Scene scene = mobileBlocked();
+    scene.robotStart = {1.9, 2.7};
+    const std::string what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, scene.robotStartWhere.str() + ": ")) << what;
+    EXPECT_TRUE(has(what, "'y'")) << what;
+}
+
+TEST(ManipulationSetupInput, ObjectStartOffEverySurfaceIsReportedAtTheObject)
+{
+    for (const Eigen::Vector3d &position :
+         {Eigen::Vector3d(0.8, -0.1, 0.3), Eigen::Vector3d(0.8, -0.1, -0.01)})
+    {
+        Scene scene = mobileBlocked();
+        scene.objects[1].start.position = position;
+        const std::string what = setupError(scene);
+        EXPECT_TRUE(startsWith(what, scene.objects[1].where.str() + ": ")) << what;
+        EXPECT_TRUE(has(what, "'obj2'")) << what;
+        EXPECT_TRUE(has(what, "no support surface")) << what;
+    }
+}
+
+TEST(ManipulationSetupInput, UnknownPlannerParameterIsNamed)
+{
+    Scene scene = mobileBlocked();
+    scene.plannerParams.push_back({"warp_speed", "9", {"unit_params.xml", 42}});
+    const std::string what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, "unit_params.xml:42: ")) << what;
+    EXPECT_TRUE(has(what, "'warp_speed'")) << what;
+    EXPECT_TRUE(has(what, "connect_step")) << what;  // the known names are listed
+}
+
+TEST(ManipulationSetupInput, BadPlannerParameterValueIsNamed)
+{
+    const std::vector<std::pair<std::string, std::string>> bad{{"connect_step", "abc"},
+                                                               {"connect_step", "-1"},
+                                                               {"vertex_step", "0"},
+                                                               {"undefined_probability", "1.5"}};
+    for (const auto &[name, value] : bad)
+    {
+        Scene scene = mobileBlocked();
+        scene.plannerParams.push_back({name, value, {"unit_params.xml", 7}});
+        const std::string what = setupError(scene);
+        EXPECT_TRUE(startsWith(what, "unit_params.xml:7: ")) << name << "=" << value << ": " << what;
+        EXPECT_TRUE(has(what, "'" + name + "'")) << what;
+        EXPECT_TRUE(has(what, "'" + value + "'")) << what;
+    }
+}
+
+TEST(ManipulationSetupInput, UnknownPrimitiveTypeIsReportedAtItsLine)
+{
+    Scene scene = mobileBlocked();
+    scene.primitives.push_back({"teleport", {}, {"unit_prims.xml", 9}});
+    const std::string what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, "unit_prims.xml:9: ")) << what;
+    EXPECT_TRUE(has(what, "teleport")) << what;
+}
+
+TEST(ManipulationSetupInput, OnlyTheMoplPlannerIsKnown)
+{
+    Scene scene = mobileBlocked();
+    scene.planner = "rrt_connect";
+    const std::string what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, scene.file)) << what;
+    EXPECT_TRUE(has(what, "rrt_connect")) << what;
+    EXPECT_TRUE(has(what, "mopl")) << what;
+}
+
+TEST(ManipulationSetupInput, RobotFaultsAreReportedAtTheRobotLine)
+{
+    Scene scene = mobileBlocked();
+    ASSERT_GT(scene.robot.where.line, 0);
+    scene.robot.toolLink = "gripper";
+    std::string what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, scene.robot.where.str() + ": ")) << what;
+    EXPECT_TRUE(has(what, "gripper")) << what;
+
+    scene = mobileBlocked();
+    scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/unit_no_such_robot.urdf";
+    what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, scene.robot.where.str() + ": ")) << what;
+    EXPECT_TRUE(has(what, "unit_no_such_robot.urdf")) << what;
+}

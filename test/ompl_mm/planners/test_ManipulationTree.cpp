@@ -1,0 +1,230 @@
+// Tests for ManipulationTree.
+#include "ompl_mm/geometric/ManipulationSetup.h"
+#include "ompl_mm/planners/ManipulationTree.h"
+#include "ompl_mm/scene/SceneLoader.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+
+using namespace ompl_mm;
+namespace ob = ompl::base;
+
+namespace
+{
+    constexpr double INF = std::numeric_limits<double>::infinity();
+
+    class MobileTree : public ::testing::Test
+    {
+    protected:
+        MobileTree()
+            : setup_(loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml")),
+              space_(*setup_.manipulationSpace()),
+              metric_(&space_)
+        {
+            metric_.weights().movingObjectPenalty = 0.6;
+            metric_.weights().moveToObjectPenalty = 0.1;
+            metric_.weights().moveToObjectFactor = 1.0;
+            start_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
+            scratch_ = space_.allocState();
+        }
+        ~MobileTree() override
+        {
+            space_.freeState(start_);
+            space_.freeState(scratch_);
+        }
+
+        double uniform() { return position_(gen_); }
+
+        /** Adds n random vertices: new roots, transits (robot moves) and pushes (one object moves). */
+        void grow(ManipulationTree &tree, int n)
+        {
+            std::uniform_real_distribution<double> unit(0.0, 1.0);
+            for (int k = 0; k < n; ++k)
+            {
+                const double kind = unit(gen_);
+                if (tree.empty() || kind < 0.05)
+                {
+                    space_.copyState(scratch_, start_);
+                    randomRobot(scratch_);
+                    tree.add(scratch_, -1, {});
+                    continue;
+                }
+                const int parent =
+                    std::uniform_int_distribution<int>(0, static_cast<int>(tree.size()) - 1)(gen_);
+                space_.copyState(scratch_, tree.vertex(parent).state);
+                randomRobot(scratch_);
+                SegmentLabel label;
+                if (kind < 0.5)
+                {
+                    const int object = std::uniform_int_distribution<int>(0, 3)(gen_);
+                    randomObject(scratch_, object);
+                    label = {PrimitiveKind::Push, object};
+                }
+                tree.add(scratch_, parent, label);
+            }
+        }
+        void randomRobot(ob::State *s)
+        {
+            space_.robotValues(s)[0] = uniform();
+            space_.robotValues(s)[1] = uniform();
+        }
+        void randomObject(ob::State *s, unsigned int i)
+        {
+            space_.setObjectPose(s, i, {Eigen::Vector3d(uniform(), uniform(), 0.0), 0.0});
+        }
+
+        /** A random partial sample; defined objects sometimes keep the start pose. */
+        void randomSample(PartialState &sample)
+        {
+            std::bernoulli_distribution coin(0.5);
+            space_.copyState(sample.state(), start_);
+            randomRobot(sample.state());
+            sample.setRobotDefined(coin(gen_));
+            for (unsigned int i = 0; i < space_.objectCount(); ++i)
+            {
+                if (coin(gen_))
+                    randomObject(sample.state(), i);
+                sample.setObjectDefined(i, coin(gen_));
+            }
+        }
+
+        /** Smallest distance by brute force: the full metric to the sample completed by each vertex. */
+        double bruteForce(const ManipulationTree &tree, const PartialState &sample)
+        {
+            double best = INF;
+            MetricPoint vertex, completed;
+            for (std::size_t v = 0; v < tree.size(); ++v)
+            {
+                sample.complete(tree.vertex(v).state, scratch_);
+                metric_.makePoint(tree.vertex(v).state, vertex);
+                metric_.makePoint(scratch_, completed);
+                best = std::min(best, tree.forward() ? metric_.distance(vertex, completed)
+                                                     : metric_.distance(completed, vertex));
+            }
+            return best;
+        }
+
+        void expectExactNearest(const ManipulationTree &tree, int queries)
+        {
+            PartialState sample(&space_);
+            ManipulationMetric::Query query;
+            for (int k = 0; k < queries; ++k)
+            {
+                randomSample(sample);
+                metric_.makeQuery(sample, tree.forward(), query);
+                double d = -1.0;
+                const int nearest = tree.nearest(query, &d);
+                ASSERT_GE(nearest, 0);
+                EXPECT_NEAR(d, bruteForce(tree, sample), 1e-9) << "query " << k;
+                // the reported distance is that of the returned vertex
+                const ManipulationMetric::ObjectCost cost =
+                    metric_.objectCost(tree.vertex(nearest).point, query);
+                EXPECT_NEAR(metric_.distance(tree.vertex(nearest).point, query, cost), d, 1e-9)
+                    << "query " << k;
+            }
+        }
+
+        ManipulationSetup setup_;
+        const ManipulationStateSpace &space_;
+        ManipulationMetric metric_;
+        ob::State *start_;
+        ob::State *scratch_;
+        std::mt19937 gen_{11};
+        std::uniform_real_distribution<double> position_{-2.5, 2.5};
+    };
+}  // namespace
+
+TEST_F(MobileTree, EmptyTreeHasNoNearest)
+{
+    ManipulationTree tree(&space_, &metric_, true);
+    EXPECT_TRUE(tree.empty());
+    PartialState sample(&space_);
+    ManipulationMetric::Query query;
+    metric_.makeQuery(sample, true, query);
+    double d = 0.0;
+    EXPECT_EQ(tree.nearest(query, &d), -1);
+    EXPECT_EQ(d, INF);
+}
+
+TEST_F(MobileTree, NearestIsExactForTheForwardTree)
+{
+    ManipulationTree tree(&space_, &metric_, true);
+    grow(tree, 300);
+    ASSERT_EQ(tree.size(), 300u);
+    expectExactNearest(tree, 300);
+}
+
+TEST_F(MobileTree, NearestIsExactForTheBackwardTree)
+{
+    ManipulationTree tree(&space_, &metric_, false);
+    grow(tree, 300);
+    expectExactNearest(tree, 300);
+}
+
+TEST_F(MobileTree, AddCopiesTheStateAndCachesItsPoint)
+{
+    ManipulationTree tree(&space_, &metric_, true);
+    const int root = tree.add(start_, -1, {});
+    EXPECT_EQ(root, 0);
+    const ManipulationTree::Vertex &v = tree.vertex(0);
+    EXPECT_NE(v.state, start_);
+    EXPECT_TRUE(space_.equalStates(v.state, start_));
+    EXPECT_EQ(v.parent, -1);
+    EXPECT_EQ(v.point.joints, (std::vector<double>{1.9, 1.9}));
+    EXPECT_EQ(v.point.objects[2], Eigen::Vector3d(-1.5, -1.5, 0.0));
+}
+
+TEST_F(MobileTree, RemoveLastRestoresSizeAndRoots)
+{
+    ManipulationTree tree(&space_, &metric_, true);
+    grow(tree, 40);
+    const std::size_t size = tree.size();
+    const std::size_t roots = tree.rootCount();
+    space_.copyState(scratch_, start_);
+    tree.add(scratch_, -1, {});
+    EXPECT_EQ(tree.rootCount(), roots + 1);
+    randomObject(scratch_, 1);
+    tree.add(scratch_, static_cast<int>(size), {PrimitiveKind::Push, 1});
+    randomRobot(scratch_);
+    tree.add(scratch_, static_cast<int>(size) + 1, {});
+    EXPECT_EQ(tree.size(), size + 3);
+    tree.removeLast();
+    tree.removeLast();
+    EXPECT_EQ(tree.rootCount(), roots + 1);
+    tree.removeLast();
+    EXPECT_EQ(tree.size(), size);
+    EXPECT_EQ(tree.rootCount(), roots);
+    // the search structure stays consistent
+    expectExactNearest(tree, 50);
+    tree.clear();
+    EXPECT_TRUE(tree.empty());
+    EXPECT_EQ(tree.rootCount(), 0u);
+}
+
+TEST_F(MobileTree, BranchOrderFollowsTheTreeDirection)
+{
+    for (bool forward : {true, false})
+    {
+        ManipulationTree tree(&space_, &metric_, forward);
+        space_.copyState(scratch_, start_);
+        tree.add(scratch_, -1, {});  // 0
+        randomRobot(scratch_);
+        tree.add(scratch_, 0, {});  // 1
+        randomRobot(scratch_);
+        tree.add(scratch_, 0, {});  // 2
+        randomObject(scratch_, 0);
+        tree.add(scratch_, 1, {PrimitiveKind::Push, 0});  // 3
+        randomRobot(scratch_);
+        tree.add(scratch_, 3, {});  // 4
+        const std::vector<int> expected =
+            forward ? std::vector<int>{0, 1, 3, 4} : std::vector<int>{4, 3, 1, 0};
+        EXPECT_EQ(tree.branch(4), expected) << forward;
+        EXPECT_EQ(tree.branch(0), std::vector<int>{0});
+        EXPECT_EQ(tree.branch(2), forward ? (std::vector<int>{0, 2}) : (std::vector<int>{2, 0}));
+        EXPECT_EQ(tree.vertex(3).label, (SegmentLabel{PrimitiveKind::Push, 0}));
+        EXPECT_EQ(tree.vertex(3).parent, 1);
+        EXPECT_EQ(tree.forward(), forward);
+    }
+}

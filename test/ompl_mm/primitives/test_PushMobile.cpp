@@ -1,0 +1,224 @@
+// Tests for PushMobile.
+#include "ompl_mm/geometric/ManipulationSetup.h"
+#include "ompl_mm/primitives/PushMobile.h"
+#include "ompl_mm/scene/SceneLoader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace ompl_mm;
+namespace ob = ompl::base;
+
+namespace
+{
+    constexpr double STANDOFF = 0.41;
+    constexpr unsigned int OBJ2 = 1, OBJ4 = 3;
+    using V2 = Eigen::Vector2d;
+
+    Scene mobileBlocked()
+    {
+        return loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
+    }
+
+    class MobilePush : public ::testing::Test
+    {
+    protected:
+        explicit MobilePush(const Scene &scene = mobileBlocked())
+            : setup_(scene),
+              space_(*setup_.manipulationSpace()),
+              push_(&space_, STANDOFF),
+              trajectory_(&space_)
+        {
+            from_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
+            to_ = space_.cloneState(from_);
+        }
+        ~MobilePush() override
+        {
+            space_.freeState(from_);
+            space_.freeState(to_);
+        }
+
+        void robot(ob::State *s, const V2 &q)
+        {
+            space_.robotValues(s)[0] = q.x();
+            space_.robotValues(s)[1] = q.y();
+        }
+        V2 robot(const ob::State *s) const { return V2(space_.robotValues(s)[0], space_.robotValues(s)[1]); }
+        void object(ob::State *s, unsigned int i, const V2 &p, double z = 0.0)
+        {
+            space_.setObjectPose(s, i, {Eigen::Vector3d(p.x(), p.y(), z), space_.objectYaw(s, i)});
+        }
+        V2 object(const ob::State *s, unsigned int i) const { return space_.objectPosition(s, i).head<2>(); }
+
+        ManipulationSetup setup_;
+        const ManipulationStateSpace &space_;
+        PushMobile push_;
+        Trajectory trajectory_;
+        ob::State *from_;
+        ob::State *to_;
+    };
+
+    /** MOBILE BLOCKED with a second surface 0.2 high (no obstacle under it) over a free area. */
+    Scene withLedge()
+    {
+        Scene scene = mobileBlocked();
+        SupportSurface ledge;
+        ledge.name = "ledge";
+        ledge.min = V2(0.5, 1.5);
+        ledge.max = V2(1.5, 2.5);
+        ledge.height = 0.2;
+        scene.surfaces.push_back(ledge);
+        return scene;
+    }
+
+    class LedgePush : public MobilePush
+    {
+    protected:
+        LedgePush() : MobilePush(withLedge()) {}
+    };
+}  // namespace
+
+TEST_F(MobilePush, NameKindAndStandoff)
+{
+    EXPECT_EQ(push_.name(), "push_mobile");
+    EXPECT_EQ(push_.kind(), PrimitiveKind::Push);
+    EXPECT_DOUBLE_EQ(push_.standoff(), STANDOFF);
+}
+
+TEST_F(MobilePush, UsefulWhenAnObjectSlides)
+{
+    object(to_, OBJ2, V2(1.3, -0.1));
+    EXPECT_TRUE(push_.isUseful(from_, to_));
+    robot(to_, V2(0.0, 0.0));  // the robot may end anywhere
+    EXPECT_TRUE(push_.isUseful(from_, to_));
+}
+
+TEST_F(MobilePush, NotUsefulWhenNothingMovesOrOnlyTheRobot)
+{
+    EXPECT_FALSE(push_.isUseful(from_, to_));
+    robot(to_, V2(0.0, 0.0));
+    EXPECT_FALSE(push_.isUseful(from_, to_));
+}
+
+TEST_F(MobilePush, NotUsefulWhenAnObjectIsLifted)
+{
+    object(to_, OBJ2, V2(0.8, -0.1), 0.3);  // lifted in place
+    EXPECT_FALSE(push_.isUseful(from_, to_));
+    object(to_, OBJ2, V2(1.3, -0.1), 0.3);  // lifted and moved
+    EXPECT_FALSE(push_.isUseful(from_, to_));
+    // another object lifted in both states spoils a slide of obj2
+    object(to_, OBJ2, V2(1.3, -0.1));
+    object(from_, OBJ4, V2(1.2, 1.9), 0.3);
+    object(to_, OBJ4, V2(1.2, 1.9), 0.3);
+    EXPECT_FALSE(push_.isUseful(from_, to_));
+}
+
+TEST_F(LedgePush, NotUsefulWhenTheHeightChanges)
+{
+    // obj4 from the floor onto the ledge: both rest, but it does not slide
+    ASSERT_GE(space_.model()->restingSurface(Eigen::Vector3d(1.0, 2.0, 0.2)), 0);
+    object(to_, OBJ4, V2(1.0, 2.0), 0.2);
+    EXPECT_FALSE(push_.isUseful(from_, to_));
+    // it slides when the heights agree
+    object(to_, OBJ4, V2(1.0, 2.0), 0.0);
+    EXPECT_TRUE(push_.isUseful(from_, to_));
+}
+
+TEST_F(MobilePush, PropagatePlacesTheRobotBehindTheObject)
+{
+    const V2 start(0.8, -0.1), target(1.3, -0.1);
+    object(to_, OBJ2, target);
+    trajectory_.reset(from_);
+    ASSERT_TRUE(push_.propagate(from_, to_, trajectory_));
+    ASSERT_EQ(trajectory_.size(), 3u);
+    const V2 direction = (target - start).normalized();
+
+    // a transit to the standoff point behind the object; nothing else changes
+    const ob::State *behind = trajectory_.state(1);
+    EXPECT_EQ(trajectory_.label(0), (SegmentLabel{PrimitiveKind::Transit, -1}));
+    EXPECT_NEAR((robot(behind) - (start - STANDOFF * direction)).norm(), 0.0, 1e-12);
+    for (unsigned int i = 0; i < space_.objectCount(); ++i)
+        EXPECT_FALSE(space_.objectMoves(from_, behind, i)) << i;
+
+    // the push: object at its target, robot the standoff behind it, height and yaw kept
+    const ob::State *pushed = trajectory_.state(2);
+    EXPECT_EQ(trajectory_.label(1), (SegmentLabel{PrimitiveKind::Push, static_cast<int>(OBJ2)}));
+    EXPECT_NEAR((robot(pushed) - (target - STANDOFF * direction)).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((object(pushed, OBJ2) - target).norm(), 0.0, 1e-12);
+    EXPECT_EQ(space_.objectPosition(pushed, OBJ2).z(), 0.0);
+    EXPECT_EQ(space_.objectYaw(pushed, OBJ2), space_.objectYaw(from_, OBJ2));
+    for (unsigned int i : {0u, 2u, 3u})
+        EXPECT_FALSE(space_.objectMoves(from_, pushed, i)) << i;
+}
+
+TEST_F(MobilePush, PropagateAlongADiagonal)
+{
+    const V2 start(0.8, -0.1), target(1.1, -0.5);  // displacement (0.3, -0.4): direction (0.6, -0.8)
+    object(to_, OBJ2, target);
+    trajectory_.reset(from_);
+    ASSERT_TRUE(push_.propagate(from_, to_, trajectory_));
+    ASSERT_EQ(trajectory_.size(), 3u);
+    const V2 direction(0.6, -0.8);
+    EXPECT_NEAR((robot(trajectory_.state(1)) - (start - STANDOFF * direction)).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((robot(trajectory_.state(2)) - (target - STANDOFF * direction)).norm(), 0.0, 1e-12);
+    // the robot stays at the standoff from the object's centre while pushing
+    EXPECT_NEAR((robot(trajectory_.state(2)) - object(trajectory_.state(2), OBJ2)).norm(), STANDOFF, 1e-12);
+}
+
+TEST_F(MobilePush, NoTransitWhenAlreadyBehindTheObject)
+{
+    const V2 target(1.3, -0.1);
+    robot(from_, V2(0.8 - STANDOFF, -0.1));
+    object(to_, OBJ2, target);
+    trajectory_.reset(from_);
+    ASSERT_TRUE(push_.propagate(from_, to_, trajectory_));
+    ASSERT_EQ(trajectory_.size(), 2u);
+    EXPECT_EQ(trajectory_.label(0).kind, PrimitiveKind::Push);
+}
+
+TEST_F(MobilePush, PushesTheSlidingObjectNearestToTheTool)
+{
+    object(to_, OBJ2, V2(1.0, -0.3));
+    object(to_, OBJ4, V2(0.9, 1.9));
+    // the tool at (1.9, 1.9): obj4 at 0.7 is nearer than obj2
+    ASSERT_LT((V2(1.9, 1.9) - V2(1.2, 1.9)).norm(), (V2(1.9, 1.9) - V2(0.8, -0.1)).norm());
+    trajectory_.reset(from_);
+    ASSERT_TRUE(push_.propagate(from_, to_, trajectory_));
+    EXPECT_EQ(trajectory_.label(trajectory_.size() - 2).object, static_cast<int>(OBJ4));
+    EXPECT_FALSE(space_.objectMoves(from_, trajectory_.back(), OBJ2));
+
+    // from next to obj2, obj2 goes first
+    robot(from_, V2(0.8, 0.4));
+    trajectory_.reset(from_);
+    ASSERT_TRUE(push_.propagate(from_, to_, trajectory_));
+    EXPECT_EQ(trajectory_.label(trajectory_.size() - 2).object, static_cast<int>(OBJ2));
+    EXPECT_FALSE(space_.objectMoves(from_, trajectory_.back(), OBJ4));
+}
+
+TEST_F(MobilePush, PropagateWithoutASlidingObjectAppendsNothing)
+{
+    robot(to_, V2(0.0, 0.0));
+    trajectory_.reset(from_);
+    EXPECT_FALSE(push_.propagate(from_, to_, trajectory_));
+    EXPECT_EQ(trajectory_.size(), 1u);
+}
+
+TEST_F(MobilePush, ConstructorRejectsNonPositiveStandoff)
+{
+    EXPECT_THROW(PushMobile(&space_, 0.0), ompl::Exception);
+    EXPECT_THROW(PushMobile(&space_, -0.1), ompl::Exception);
+    EXPECT_THROW(PushMobile(&space_, std::numeric_limits<double>::quiet_NaN()), ompl::Exception);
+    EXPECT_NO_THROW(PushMobile(&space_, 1e-3));
+}
+
+TEST(PushMobileRobot, ConstructorRejectsARobotWithoutPlanarBase)
+{
+    Scene scene;
+    scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/unit_arm1.urdf";
+    scene.robot.toolLink = "hand";
+    auto model = std::make_shared<ManipulationModel>(scene, RobotModel::fromUrdfFile(scene.robot.urdfFile));
+    ManipulationStateSpace space(model);
+    EXPECT_THROW(PushMobile(&space, STANDOFF), ompl::Exception);
+}
