@@ -93,15 +93,40 @@ namespace ompl_mm
         double distance(const MetricPoint &vertex, const Query &query, const ObjectCost &objectCost,
                         double cutoff = std::numeric_limits<double>::infinity()) const;
 
+        /** Doubles in a packed robot part: tool point (3), tool rotation (4: x y z w), joints. */
+        std::size_t packedRobotSize() const { return 7 + space_->robotDimension(); }
+        /** Writes the robot part of point, packed, to out (packedRobotSize() doubles): trees keep
+            these contiguous, so a scan touches little memory. */
+        void packRobot(const MetricPoint &point, double *out) const;
+        /** The greedy visit of the moving objects depends on a vertex only through its first
+            object (the one nearest to its tool); per object i visited first: the cost of the legs
+            after it and where the tool is after the last object. Shared by vertices with the same
+            objects; filled on first use. */
+        struct LegPlan
+        {
+            bool ready{false};
+            std::vector<double> legsAfter;
+            std::vector<Eigen::Vector3d> lastEnd;
+        };
+
+        /** As distance() for a vertex given by its packed robot part and a point with its objects;
+            plan (reset for each query and object configuration) saves work across such vertices. */
+        double distance(const double *packedRobot, const MetricPoint &objects, const Query &query,
+                        const ObjectCost &objectCost, double cutoff, LegPlan &plan) const;
+
     private:
         /** Cost of the tool's approach to the first object, `distance` away. */
         double approachCost(double distance) const;
-        double robotTerm(const MetricPoint &from, const MetricPoint &to) const;
+        /** The robot's own distance between a packed robot part and a point (symmetric). */
+        double robotTerm(const double *packedRobot, const MetricPoint &point) const;
         /** Adds to `cost` the tool's legs from startTool to each moving object (nearest first) and
             on to targetTool; infinity once the total reaches cutoff; cost itself when none moves. */
         double addToolLegs(const MetricPoint &from, const MetricPoint &to, std::uint64_t moving,
                            const Eigen::Vector3d &startTool, const Eigen::Vector3d &targetTool, double cost,
-                           double cutoff) const;
+                           double cutoff, LegPlan &plan) const;
+        /** Fills plan for the objects moving from `from` to `to`. */
+        void planLegs(const MetricPoint &from, const MetricPoint &to, std::uint64_t moving,
+                      LegPlan &plan) const;
 
         const ManipulationStateSpace *space_;
         Weights weights_;

@@ -28,7 +28,8 @@ namespace ompl_mm
         double connectTime{0.0};    ///< collision-checked walks along propagated trajectories
         double smoothingTime{0.0};  ///< shortcutting the solution
         std::uint64_t iterations{0};
-        std::uint64_t collisionQueries{0};      ///< state validity queries
+        std::uint64_t restarts{0};          ///< times the trees were cleared (see MOPL::setRestartIterations)
+        std::uint64_t collisionQueries{0};  ///< state validity queries
         std::uint64_t freeCollisionQueries{0};  ///< those that found the state valid
     };
 
@@ -53,6 +54,12 @@ namespace ompl_mm
         /** A tree vertex is added every this much motion along an extension; 0.35 by default. */
         void setVertexStep(double step);
         double getVertexStep() const { return vertexStep_; }
+        /** Iterations after which the search starts again from the start state with empty trees;
+            each later run may last twice as long, so the planner stays probabilistically
+            complete while the heavy tail of its run time is cut. 0 never restarts; 10000 by
+            default. */
+        void setRestartIterations(unsigned int iterations) { restartIterations_ = iterations; }
+        unsigned int getRestartIterations() const { return restartIterations_; }
         /** Shortcut attempts per run of transit segments of the solution; 100 by default. */
         void setSmoothingAttempts(unsigned int attempts) { smoothingAttempts_ = attempts; }
         unsigned int getSmoothingAttempts() const { return smoothingAttempts_; }
@@ -85,6 +92,8 @@ namespace ompl_mm
         /** Builds, smooths and records the solution through forward vertex f and goal vertex g. */
         void addSolution(int f, int g);
         void smooth(ManipulationPath &path);
+        /** Clears both trees but the start. */
+        void restart();
 
         std::vector<PrimitivePtr> primitives_;
         const ManipulationStateSpace *space_{nullptr};
@@ -100,6 +109,7 @@ namespace ompl_mm
         double connectStep_{0.05};
         double vertexStep_{0.35};
         unsigned int smoothingAttempts_{100};
+        unsigned int restartIterations_{10000};
         MOPLStatistics statistics_;
     };
 }  // namespace ompl_mm

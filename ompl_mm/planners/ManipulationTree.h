@@ -10,6 +10,7 @@
 #include "ompl_mm/base/ManipulationMetric.h"
 #include "ompl_mm/primitives/Trajectory.h"
 
+#include <limits>
 #include <vector>
 
 namespace ompl_mm
@@ -46,12 +47,10 @@ namespace ompl_mm
         void clear();
 
         /** Index of the vertex nearest to the prepared sample (made for this tree's direction),
-            and its distance in *distance; -1 when the tree is empty. */
-        int nearest(const ManipulationMetric::Query &query, double *distance) const;
-
-        /** Relative tolerance of nearest(): it returns a vertex within (1 + tolerance) times the
-            nearest distance; 0 makes it exact. */
-        void setNearestTolerance(double tolerance) { shrink_ = 1.0 / (1.0 + tolerance); }
+            and its distance in *distance; only vertices closer than cutoff count, -1 when there
+            is none (or the tree is empty). */
+        int nearest(const ManipulationMetric::Query &query, double *distance,
+                    double cutoff = std::numeric_limits<double>::infinity()) const;
 
         /** Indices from a root to vertex i (forward tree) or from vertex i to its root (backward). */
         std::vector<int> branch(int i) const;
@@ -87,18 +86,20 @@ namespace ompl_mm
         /** Members per block. */
         static constexpr std::size_t BLOCK_SIZE = 8;
 
-        /** Lower bound of the distance from vertices of group g within bounds to the query. */
+        /** Lower bound of the distance from vertices of group g within bounds to the query; the
+            tool's legs are bounded only when the rest stays below cutoff. */
         double lowerBound(std::size_t g, const Bounds &bounds, const ManipulationMetric::Query &query,
-                          Eigen::Map<const Eigen::VectorXd> queryJoints) const;
+                          Eigen::Map<const Eigen::VectorXd> queryJoints, double cutoff) const;
         /** Scans the blocks of group g whose bounds may beat *bestDistance. */
         void scanGroup(std::size_t g, const ManipulationMetric::Query &query,
                        Eigen::Map<const Eigen::VectorXd> queryJoints, int *best, double *bestDistance) const;
 
         std::vector<Vertex> vertices_;
+        std::vector<double> packedRobots_;  ///< ManipulationMetric::packRobot of each vertex, in order
         std::vector<Group> groups_;
         mutable std::vector<ManipulationMetric::ObjectCost> groupCosts_;
         mutable std::vector<double> groupBounds_;
+        mutable ManipulationMetric::LegPlan legPlan_;  ///< of the group being scanned
         std::size_t roots_{0};
-        double shrink_{1.0};  ///< 1 / (1 + nearest tolerance)
     };
 }  // namespace ompl_mm

@@ -2,6 +2,7 @@
 
 #include <ompl/util/Exception.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -15,14 +16,6 @@ namespace ompl_mm
         {
             return (a.objects[i] - b.objects[i]).cwiseAbs().maxCoeff() > SAME ||
                    std::abs(a.yaws[i] - b.yaws[i]) > SAME;
-        }
-
-        double jointDistance(const MetricPoint &a, const MetricPoint &b)
-        {
-            double sum = 0.0;
-            for (std::size_t j = 0; j < a.joints.size(); ++j)
-                sum += (a.joints[j] - b.joints[j]) * (a.joints[j] - b.joints[j]);
-            return std::sqrt(sum);
         }
     }  // namespace
 
@@ -50,44 +43,94 @@ namespace ompl_mm
         }
     }
 
-    double ManipulationMetric::robotTerm(const MetricPoint &from, const MetricPoint &to) const
+    void ManipulationMetric::packRobot(const MetricPoint &point, double *out) const
     {
+        std::copy_n(point.tool.data(), 3, out);
+        std::copy_n(point.toolRotation.coeffs().data(), 4, out + 3);
+        std::copy(point.joints.begin(), point.joints.end(), out + 7);
+    }
+
+    double ManipulationMetric::robotTerm(const double *packedRobot, const MetricPoint &point) const
+    {
+        const double *joints = packedRobot + 7;
+        double squared = 0.0;
+        for (std::size_t j = 0; j < point.joints.size(); ++j)
+            squared += (joints[j] - point.joints[j]) * (joints[j] - point.joints[j]);
         if (mobile_)
-            return jointDistance(from, to);
-        const double rotation = 1.0 - std::abs(from.toolRotation.dot(to.toolRotation));
-        return weights_.robotWeight *
-               (0.5 * jointDistance(from, to) + (from.tool - to.tool).norm() + 2.0 * rotation);
+            return std::sqrt(squared);
+        const double rotation =
+            1.0 -
+            std::abs(Eigen::Map<const Eigen::Vector4d>(packedRobot + 3).dot(point.toolRotation.coeffs()));
+        const double tool = (Eigen::Map<const Eigen::Vector3d>(packedRobot) - point.tool).norm();
+        return weights_.robotWeight * (0.5 * std::sqrt(squared) + tool + 2.0 * rotation);
+    }
+
+    void ManipulationMetric::planLegs(const MetricPoint &from, const MetricPoint &to, std::uint64_t moving,
+                                      LegPlan &plan) const
+    {
+        plan.legsAfter.resize(from.objects.size());
+        plan.lastEnd.resize(from.objects.size());
+        for (std::uint64_t firsts = moving; firsts != 0; firsts &= firsts - 1)
+        {
+            const int first = __builtin_ctzll(firsts);
+            std::uint64_t pending = moving & ~(std::uint64_t{1} << first);
+            Eigen::Vector3d tool = to.objects[first];
+            double legs = 0.0;
+            while (pending != 0)
+            {
+                int next = 0;
+                double nearest = std::numeric_limits<double>::infinity();
+                for (std::uint64_t rest = pending; rest != 0; rest &= rest - 1)
+                {
+                    const int i = __builtin_ctzll(rest);
+                    const double d = (from.objects[i] - tool).squaredNorm();
+                    if (d < nearest)
+                    {
+                        nearest = d;
+                        next = i;
+                    }
+                }
+                pending &= ~(std::uint64_t{1} << next);
+                legs += approachCost(std::sqrt(nearest));
+                tool = to.objects[next];
+            }
+            plan.legsAfter[first] = legs;
+            plan.lastEnd[first] = tool;
+        }
+        plan.ready = true;
     }
 
     double ManipulationMetric::addToolLegs(const MetricPoint &from, const MetricPoint &to,
                                            std::uint64_t moving, const Eigen::Vector3d &startTool,
-                                           const Eigen::Vector3d &targetTool, double cost,
-                                           double cutoff) const
+                                           const Eigen::Vector3d &targetTool, double cost, double cutoff,
+                                           LegPlan &plan) const
     {
         if (moving == 0)
             return cost;
-        Eigen::Vector3d tool = startTool;
-        while (moving != 0)
+        // the first object is the moving one nearest to the start; the rest of the visit is planned
+        int first = __builtin_ctzll(moving);
+        double nearest = (from.objects[first] - startTool).squaredNorm();
+        for (std::uint64_t rest = moving & (moving - 1); rest != 0; rest &= rest - 1)
         {
-            if (cost >= cutoff)
-                return std::numeric_limits<double>::infinity();
-            int next = 0;
-            double nearest = std::numeric_limits<double>::infinity();
-            for (std::uint64_t rest = moving; rest != 0; rest &= rest - 1)
+            const int i = __builtin_ctzll(rest);
+            const double d = (from.objects[i] - startTool).squaredNorm();
+            if (d < nearest)
             {
-                const int i = __builtin_ctzll(rest);
-                const double d = (from.objects[i] - tool).squaredNorm();
-                if (d < nearest)
-                {
-                    nearest = d;
-                    next = i;
-                }
+                nearest = d;
+                first = i;
             }
-            moving &= ~(std::uint64_t{1} << next);
-            cost += approachCost(std::sqrt(nearest));
-            tool = to.objects[next];
         }
-        cost += (targetTool - tool).norm();
+        cost += approachCost(std::sqrt(nearest));
+        if (cost >= cutoff)
+            return std::numeric_limits<double>::infinity();
+        if ((moving & (moving - 1)) == 0)
+            cost += (targetTool - to.objects[first]).norm();
+        else
+        {
+            if (!plan.ready)
+                planLegs(from, to, moving, plan);
+            cost += plan.legsAfter[first] + (targetTool - plan.lastEnd[first]).norm();
+        }
         return cost < cutoff ? cost : std::numeric_limits<double>::infinity();
     }
 
@@ -147,16 +190,19 @@ namespace ompl_mm
 
     double ManipulationMetric::distance(const MetricPoint &from, const MetricPoint &to) const
     {
-        double cost = robotTerm(from, to);
-        std::uint64_t moving = 0;
+        std::vector<double> packed(packedRobotSize());
+        packRobot(from, packed.data());
+        ObjectCost objects;
         for (std::size_t i = 0; i < from.objects.size(); ++i)
             if (moves(from, to, i))
             {
-                moving |= std::uint64_t{1} << i;
-                cost += weights_.movingObjectPenalty + (to.objects[i] - from.objects[i]).norm();
+                objects.moving |= std::uint64_t{1} << i;
+                objects.bound += weights_.movingObjectPenalty + (to.objects[i] - from.objects[i]).norm();
             }
-        return addToolLegs(from, to, moving, from.tool, to.tool, cost,
-                           std::numeric_limits<double>::infinity());
+        LegPlan plan;
+        return addToolLegs(from, to, objects.moving, from.tool, to.tool,
+                           robotTerm(packed.data(), to) + objects.bound,
+                           std::numeric_limits<double>::infinity(), plan);
     }
 
     void ManipulationMetric::makeQuery(const PartialState &sample, bool sampleIsTarget, Query &query) const
@@ -172,15 +218,29 @@ namespace ompl_mm
     double ManipulationMetric::distance(const MetricPoint &vertex, const Query &query,
                                         const ObjectCost &objectCost, double cutoff) const
     {
-        const MetricPoint &from = query.sampleIsTarget ? vertex : query.point;
-        const MetricPoint &to = query.sampleIsTarget ? query.point : vertex;
+        std::vector<double> packed(packedRobotSize());
+        packRobot(vertex, packed.data());
+        LegPlan plan;
+        return distance(packed.data(), vertex, query, objectCost, cutoff, plan);
+    }
+
+    double ManipulationMetric::distance(const double *packedRobot, const MetricPoint &objects,
+                                        const Query &query, const ObjectCost &objectCost, double cutoff,
+                                        LegPlan &plan) const
+    {
+        const MetricPoint &from = query.sampleIsTarget ? objects : query.point;
+        const MetricPoint &to = query.sampleIsTarget ? query.point : objects;
+        const Eigen::Vector3d vertexTool = Eigen::Map<const Eigen::Vector3d>(packedRobot);
         // an undefined robot takes the vertex's pose: no robot term, and the tool starts and ends there
         if (!query.robotDefined)
-            return addToolLegs(from, to, objectCost.moving, vertex.tool, vertex.tool, objectCost.bound,
-                               cutoff);
-        const double cost = robotTerm(from, to) + objectCost.bound;
+            return addToolLegs(from, to, objectCost.moving, vertexTool, vertexTool, objectCost.bound, cutoff,
+                               plan);
+        const double cost = robotTerm(packedRobot, query.point) + objectCost.bound;
         if (cost >= cutoff)
             return std::numeric_limits<double>::infinity();
-        return addToolLegs(from, to, objectCost.moving, from.tool, to.tool, cost, cutoff);
+        return query.sampleIsTarget ? addToolLegs(from, to, objectCost.moving, vertexTool, query.point.tool,
+                                                  cost, cutoff, plan)
+                                    : addToolLegs(from, to, objectCost.moving, query.point.tool, vertexTool,
+                                                  cost, cutoff, plan);
     }
 }  // namespace ompl_mm

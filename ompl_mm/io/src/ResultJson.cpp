@@ -35,6 +35,7 @@ namespace ompl_mm
                 << "    \"time_smoothing_s\": " << s.smoothingTime << ",\n"
                 << "    \"time_ik_s\": 0,\n"
                 << "    \"iterations\": " << s.iterations << ",\n"
+                << "    \"restarts\": " << s.restarts << ",\n"
                 << "    \"collision_queries\": " << s.collisionQueries << ",\n"
                 << "    \"collision_queries_free\": " << s.freeCollisionQueries << "\n"
                 << "  }";

@@ -68,6 +68,8 @@ namespace ompl_mm
                              "0.001:0.001:1.");
         declareParam<double>("vertex_step", this, &MOPL::setVertexStep, &MOPL::getVertexStep,
                              "0.01:0.01:10.");
+        declareParam<unsigned int>("restart_iterations", this, &MOPL::setRestartIterations,
+                                   &MOPL::getRestartIterations, "0:1000:1000000");
         declareParam<unsigned int>("smoothing_attempts", this, &MOPL::setSmoothingAttempts,
                                    &MOPL::getSmoothingAttempts, "0:1:10000");
         auto weight =
@@ -145,6 +147,16 @@ namespace ompl_mm
         statistics_ = MOPLStatistics();
     }
 
+    void MOPL::restart()
+    {
+        ob::State *start = space_->cloneState(startTree_->vertex(0).state);
+        startTree_->clear();
+        goalTree_->clear();
+        startTree_->add(start, -1, {});
+        space_->freeState(start);
+        ++statistics_.restarts;
+    }
+
     double MOPL::segmentLength(const ob::State *a, const ob::State *b) const
     {
         double length = 0.0;
@@ -160,25 +172,43 @@ namespace ompl_mm
 
     int MOPL::nearest(ManipulationTree &tree, PartialState &sample, bool *newRoot)
     {
-        ScopedTimer timer(statistics_.nearestTime);
         *newRoot = false;
-        metric_->makeQuery(sample, tree.forward(), query_);
-        double best = 0.0;
-        int index = tree.nearest(query_, &best);
         if (tree.forward())
-            return index;
-
-        // PROJSAMP: the goal state nearest to the sample competes with the goal tree's vertices
-        ob::State *root = space_->allocState();
-        goal_->complete(sample, root, rng_);
-        MetricPoint rootPoint;
-        metric_->makePoint(root, rootPoint);
-        const double rootDistance =
-            metric_->distance(rootPoint, query_, metric_->objectCost(rootPoint, query_), best);
-        if ((index < 0 || rootDistance < best) && si_->isValid(root))
         {
-            index = tree.add(root, -1, {});
-            *newRoot = true;
+            ScopedTimer timer(statistics_.nearestTime);
+            metric_->makeQuery(sample, true, query_);
+            return tree.nearest(query_, nullptr);
+        }
+
+        // PROJSAMP: the goal state nearest to the sample competes with the goal tree's vertices,
+        // and its distance bounds their search; making it is sample generation
+        ob::State *root = space_->allocState();
+        double rootDistance = 0.0;
+        {
+            ScopedTimer timer(statistics_.samplingTime);
+            goal_->complete(sample, root, rng_);
+            metric_->makeQuery(sample, false, query_);
+            MetricPoint rootPoint;
+            metric_->makePoint(root, rootPoint);
+            rootDistance = metric_->distance(rootPoint, query_, metric_->objectCost(rootPoint, query_));
+        }
+        int index = -1;
+        {
+            ScopedTimer timer(statistics_.nearestTime);
+            index = tree.nearest(query_, nullptr, rootDistance);
+        }
+        if (index < 0)
+        {
+            if (si_->isValid(root))
+            {
+                index = tree.add(root, -1, {});
+                *newRoot = true;
+            }
+            else
+            {
+                ScopedTimer timer(statistics_.nearestTime);
+                index = tree.nearest(query_, nullptr);
+            }
         }
         space_->freeState(root);
         return index;
@@ -302,8 +332,17 @@ namespace ompl_mm
         PartialState sample(space_);
         PartialState connectTarget(space_);
         bool forward = true;
+        // restarts cut the heavy tail of the search time; each run may last twice as long as the last
+        std::uint64_t allowance = restartIterations_;
+        std::uint64_t runStart = statistics_.iterations;
         while (!ptc)
         {
+            if (restartIterations_ > 0 && statistics_.iterations - runStart >= allowance)
+            {
+                restart();
+                runStart = statistics_.iterations;
+                allowance *= 2;
+            }
             ++statistics_.iterations;
             ManipulationTree &a = forward ? *startTree_ : *goalTree_;
             ManipulationTree &b = forward ? *goalTree_ : *startTree_;
@@ -443,6 +482,7 @@ namespace ompl_mm
         data.properties["time_smoothing REAL"] = std::to_string(statistics_.smoothingTime);
         data.properties["time_ik REAL"] = "0";
         data.properties["iterations INTEGER"] = std::to_string(statistics_.iterations);
+        data.properties["restarts INTEGER"] = std::to_string(statistics_.restarts);
         data.properties["collision_queries INTEGER"] = std::to_string(statistics_.collisionQueries);
         data.properties["collision_queries_free INTEGER"] = std::to_string(statistics_.freeCollisionQueries);
     }

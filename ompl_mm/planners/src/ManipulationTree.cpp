@@ -37,6 +37,8 @@ namespace ompl_mm
         group.bounds.extend(vertex.point);
         group.blocks.back().bounds.extend(vertex.point);
         ++group.blocks.back().end;
+        packedRobots_.resize((index + 1) * metric_->packedRobotSize());
+        metric_->packRobot(vertex.point, packedRobots_.data() + index * metric_->packedRobotSize());
         vertices_.push_back(std::move(vertex));
         if (parent < 0)
             ++roots_;
@@ -56,6 +58,7 @@ namespace ompl_mm
             groups_.pop_back();
         space_->freeState(vertices_.back().state);
         vertices_.pop_back();
+        packedRobots_.resize(vertices_.size() * metric_->packedRobotSize());
     }
 
     void ManipulationTree::clear()
@@ -72,11 +75,15 @@ namespace ompl_mm
 
     double ManipulationTree::lowerBound(std::size_t g, const Bounds &bounds,
                                         const ManipulationMetric::Query &query,
-                                        Eigen::Map<const Eigen::VectorXd> queryJoints) const
+                                        Eigen::Map<const Eigen::VectorXd> queryJoints, double cutoff) const
     {
+        // the cheap parts first: often they already reach the cutoff
         const double joints = std::sqrt(bounds.joints.squaredExteriorDistance(queryJoints));
         const double tool = std::sqrt(bounds.tools.squaredExteriorDistance(query.point.tool));
-        return groupCosts_[g].bound + metric_->robotLowerBound(query, joints, tool) +
+        const double bound = groupCosts_[g].bound + metric_->robotLowerBound(query, joints, tool);
+        if (bound >= cutoff)
+            return bound;
+        return bound +
                metric_->legLowerBound(vertices_[groups_[g].first].point, query, groupCosts_[g], bounds.tools);
     }
 
@@ -85,17 +92,20 @@ namespace ompl_mm
                                      double *bestDistance) const
     {
         const Group &group = groups_[g];
+        const MetricPoint &objects = vertices_[group.first].point;
+        const std::size_t stride = metric_->packedRobotSize();
+        legPlan_.ready = false;
         for (const Block &block : group.blocks)
         {
             if (group.blocks.size() > 1 &&
-                lowerBound(g, block.bounds, query, queryJoints) >= *bestDistance * shrink_)
+                lowerBound(g, block.bounds, query, queryJoints, *bestDistance) >= *bestDistance)
                 continue;
             for (std::size_t m = block.begin; m < block.end; ++m)
             {
                 const int i = group.members[m];
-                const double d =
-                    metric_->distance(vertices_[i].point, query, groupCosts_[g], *bestDistance * shrink_);
-                if (d < *bestDistance * shrink_)
+                const double d = metric_->distance(packedRobots_.data() + i * stride, objects, query,
+                                                   groupCosts_[g], *bestDistance, legPlan_);
+                if (d < *bestDistance)
                 {
                     *bestDistance = d;
                     *best = i;
@@ -104,10 +114,11 @@ namespace ompl_mm
         }
     }
 
-    int ManipulationTree::nearest(const ManipulationMetric::Query &query, double *distance) const
+    int ManipulationTree::nearest(const ManipulationMetric::Query &query, double *distance,
+                                  double cutoff) const
     {
         int best = -1;
-        double bestDistance = std::numeric_limits<double>::infinity();
+        double bestDistance = cutoff;
         // the most promising group first, so that its distance prunes the others
         const Eigen::Map<const Eigen::VectorXd> queryJoints(query.point.joints.data(),
                                                             query.point.joints.size());
@@ -117,14 +128,15 @@ namespace ompl_mm
         for (std::size_t g = 0; g < groups_.size(); ++g)
         {
             groupCosts_[g] = metric_->objectCost(vertices_[groups_[g].first].point, query);
-            groupBounds_[g] = lowerBound(g, groups_[g].bounds, query, queryJoints);
+            groupBounds_[g] = lowerBound(g, groups_[g].bounds, query, queryJoints, 0.0);
             if (groupBounds_[g] < groupBounds_[first])
                 first = g;
         }
         if (!groups_.empty())
             scanGroup(first, query, queryJoints, &best, &bestDistance);
         for (std::size_t g = 0; g < groups_.size(); ++g)
-            if (g != first && groupBounds_[g] < bestDistance * shrink_)
+            if (g != first && groupBounds_[g] < bestDistance &&
+                lowerBound(g, groups_[g].bounds, query, queryJoints, bestDistance) < bestDistance)
                 scanGroup(g, query, queryJoints, &best, &bestDistance);
         if (distance)
             *distance = bestDistance;

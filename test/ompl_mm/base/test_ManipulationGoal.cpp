@@ -1,69 +1,34 @@
 // Tests for ManipulationGoal.
 #include "ompl_mm/base/ManipulationGoal.h"
-#include "ompl_mm/geometric/ManipulationSetup.h"
-#include "ompl_mm/scene/InputError.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
 #include <limits>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
 
 namespace
 {
     constexpr unsigned int OBJ1 = 0, OBJ3 = 2;
 
-    Scene mobileBlocked()
-    {
-        return loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
-    }
-
-    class MobileGoal : public ::testing::Test
+    class MobileGoal : public MobileBlockedTest
     {
     protected:
-        MobileGoal()
-            : setup_(mobileBlocked()), space_(*setup_.manipulationSpace()), goal_(*setup_.manipulationGoal())
-        {
-            state_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
-        }
-        ~MobileGoal() override { space_.freeState(state_); }
-
         /** The start with the robot and obj3 moved to their goals. */
         void makeGoalState()
         {
-            space_.robotValues(state_)[0] = 0.0;
-            space_.robotValues(state_)[1] = 0.0;
-            space_.setObjectPose(state_, OBJ3, {Eigen::Vector3d(-0.9, -0.9, 0.0), 0.0});
+            setRobot(space_, state_, 0.0, 0.0);
+            setObject(space_, state_, OBJ3, -0.9, -0.9);
         }
 
-        ManipulationSetup setup_;
-        const ManipulationStateSpace &space_;
-        const ManipulationGoal &goal_;
-        ob::State *state_;
+        const ManipulationGoal &goal_ = *setup_.manipulationGoal();
+        ob::State *state_ = startCopy();
     };
-
-    /** The message of the InputError that building a setup for scene throws, or "" when none. */
-    std::string setupError(const Scene &scene)
-    {
-        try
-        {
-            ManipulationSetup setup(scene);
-        }
-        catch (const InputError &e)
-        {
-            return e.what();
-        }
-        return "";
-    }
-
-    bool startsWith(const std::string &text, const std::string &prefix)
-    {
-        return text.compare(0, prefix.size(), prefix) == 0;
-    }
 }  // namespace
 
 TEST_F(MobileGoal, StartIsNotSatisfied)
@@ -176,13 +141,13 @@ TEST_F(MobileGoal, NanCoordinateIsNotSatisfied)
 
 TEST_F(MobileGoal, YawGoalUsesTheShortAngle)
 {
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     scene.objectGoals[0].yaw = 3.1;
     ManipulationSetup setup(scene);
     const ManipulationStateSpace &space = *setup.manipulationSpace();
     ob::State *s = space.cloneState(state_);
-    space.robotValues(s)[0] = space.robotValues(s)[1] = 0.0;
-    space.setObjectPose(s, OBJ3, {Eigen::Vector3d(-0.9, -0.9, 0.0), -3.1});
+    setRobot(space, s, 0.0, 0.0);
+    setObject(space, s, OBJ3, -0.9, -0.9, 0.0, -3.1);
     // -3.1 and 3.1 are 2 pi - 6.2 apart
     EXPECT_NEAR(setup.manipulationGoal()->distanceGoal(s), (2 * M_PI - 6.2) - 0.05, 1e-9);
     space.freeState(s);
@@ -190,40 +155,40 @@ TEST_F(MobileGoal, YawGoalUsesTheShortAngle)
 
 TEST(ManipulationGoalInput, ImpossibleGoalsThrowWithTheSceneLine)
 {
-    const Scene base = mobileBlocked();
+    const Scene base = mobileBlockedScene();
     const std::string robotLine = base.robotGoal.where.str() + ": ";
     const std::string objectLine = base.objectGoals.at(0).where.str() + ": ";
     ASSERT_GT(base.robotGoal.where.line, 0);
 
+    // the setup of `scene` fails at `line` with a message containing `part`
+    auto expectError = [](const Scene &scene, const std::string &line, const std::string &part)
+    {
+        const std::string what = setupError(scene);
+        EXPECT_TRUE(startsWith(what, line)) << part << ": " << what;
+        EXPECT_TRUE(contains(what, part)) << what;
+    };
+
     Scene scene = base;
     scene.robotGoal.joints = {3.0, 0.0};
-    std::string what = setupError(scene);
-    EXPECT_TRUE(startsWith(what, robotLine)) << what;
-    EXPECT_NE(what.find("'x'"), std::string::npos) << what;
+    expectError(scene, robotLine, "'x'");
 
     scene = base;
     scene.robotGoal.joints = {0.0};
-    what = setupError(scene);
-    EXPECT_TRUE(startsWith(what, robotLine)) << what;
-    EXPECT_NE(what.find("1 joint values"), std::string::npos) << what;
+    expectError(scene, robotLine, "1 joint values");
 
     scene = base;
     scene.objectGoals[0].position = {3.0, 3.0, std::nullopt};
-    what = setupError(scene);
-    EXPECT_TRUE(startsWith(what, objectLine)) << what;
-    EXPECT_NE(what.find("obj3"), std::string::npos) << what;
+    expectError(scene, objectLine, "obj3");
 
     scene = base;
     scene.objectGoals[0].object = "obj9";
-    what = setupError(scene);
-    EXPECT_TRUE(startsWith(what, objectLine)) << what;
-    EXPECT_NE(what.find("obj9"), std::string::npos) << what;
+    expectError(scene, objectLine, "obj9");
 }
 
 TEST(ManipulationGoalInput, GoalOffEverySurfaceInOneCoordinateThrows)
 {
     // x = 3 lies beyond the floor whatever y is; z = 0.5 is the height of no surface
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     scene.objectGoals[0].position = {3.0, std::nullopt, std::nullopt};
     const std::string line = scene.objectGoals[0].where.str() + ": ";
     std::string what = setupError(scene);

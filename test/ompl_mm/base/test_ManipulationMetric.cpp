@@ -1,7 +1,7 @@
 // Tests for ManipulationMetric.
 #include "ompl_mm/base/ManipulationMetric.h"
-#include "ompl_mm/geometric/ManipulationSetup.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +10,7 @@
 #include <random>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
 
 namespace
@@ -20,36 +21,19 @@ namespace
 
     using V2 = Eigen::Vector2d;
 
-    class MobileMetric : public ::testing::Test
+    class MobileMetric : public MobileBlockedTest
     {
     protected:
         MobileMetric()
-            : setup_(loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml")),
-              space_(*setup_.manipulationSpace()),
-              metric_(&space_)
         {
             metric_.weights().movingObjectPenalty = MOVING;
             metric_.weights().moveToObjectPenalty = MOVE_TO;
             metric_.weights().moveToObjectFactor = FACTOR;
             metric_.weights().contactDistance = CONTACT;
-            from_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
-            to_ = space_.cloneState(from_);
-        }
-        ~MobileMetric() override
-        {
-            space_.freeState(from_);
-            space_.freeState(to_);
         }
 
-        void robot(ob::State *s, const V2 &q)
-        {
-            space_.robotValues(s)[0] = q.x();
-            space_.robotValues(s)[1] = q.y();
-        }
-        void object(ob::State *s, unsigned int i, const V2 &p)
-        {
-            space_.setObjectPose(s, i, {Eigen::Vector3d(p.x(), p.y(), 0.0), 0.0});
-        }
+        void robot(ob::State *s, const V2 &q) { setRobot(space_, s, q.x(), q.y()); }
+        void object(ob::State *s, unsigned int i, const V2 &p) { setObject(space_, s, i, p.x(), p.y()); }
         double distance(const ob::State *a, const ob::State *b)
         {
             MetricPoint pa, pb;
@@ -60,11 +44,21 @@ namespace
         /** Travel to an object at distance d (nothing within contact distance). */
         static double moveTo(double d) { return d > CONTACT ? MOVE_TO + FACTOR * d : 0.0; }
 
-        ManipulationSetup setup_;
-        const ManipulationStateSpace &space_;
-        ManipulationMetric metric_;
-        ob::State *from_;
-        ob::State *to_;
+        /** Fills query_ (all of to_, as the target) and vertex_ (from_); returns their object cost. */
+        ManipulationMetric::ObjectCost queryFromTo()
+        {
+            PartialState sample(&space_);
+            space_.copyState(sample.state(), to_);
+            metric_.makeQuery(sample, true, query_);
+            metric_.makePoint(from_, vertex_);
+            return metric_.objectCost(vertex_, query_);
+        }
+
+        ManipulationMetric metric_{&space_};
+        ob::State *from_ = startCopy();
+        ob::State *to_ = startCopy();
+        ManipulationMetric::Query query_;
+        MetricPoint vertex_;
     };
 }  // namespace
 
@@ -116,18 +110,12 @@ TEST_F(MobileMetric, CutoffGivesInfinityAboveAndExactBelow)
     object(to_, 1, V2(0.2, 0.7));
     object(to_, 2, V2(-0.9, -0.9));
     const double exact = distance(from_, to_);
-    PartialState sample(&space_);
-    space_.copyState(sample.state(), to_);
-    ManipulationMetric::Query query;
-    metric_.makeQuery(sample, true, query);
-    MetricPoint vertex;
-    metric_.makePoint(from_, vertex);
-    const ManipulationMetric::ObjectCost cost = metric_.objectCost(vertex, query);
-    EXPECT_NEAR(metric_.distance(vertex, query, cost), exact, 1e-12);
+    const ManipulationMetric::ObjectCost cost = queryFromTo();
+    EXPECT_NEAR(metric_.distance(vertex_, query_, cost), exact, 1e-12);
     for (double cutoff : {exact + 1.0, exact + 1e-6, 2 * exact})
-        EXPECT_NEAR(metric_.distance(vertex, query, cost, cutoff), exact, 1e-12) << cutoff;
+        EXPECT_NEAR(metric_.distance(vertex_, query_, cost, cutoff), exact, 1e-12) << cutoff;
     for (double cutoff : {0.0, 0.5, cost.bound, 0.5 * exact})
-        EXPECT_EQ(metric_.distance(vertex, query, cost, cutoff), INF) << cutoff;
+        EXPECT_EQ(metric_.distance(vertex_, query_, cost, cutoff), INF) << cutoff;
 }
 
 TEST_F(MobileMetric, CutoffJustBelowTheDistanceGivesInfinity)
@@ -135,14 +123,8 @@ TEST_F(MobileMetric, CutoffJustBelowTheDistanceGivesInfinity)
     robot(to_, V2(-0.3, 1.0));
     object(to_, 1, V2(0.2, 0.7));
     const double exact = distance(from_, to_);
-    PartialState sample(&space_);
-    space_.copyState(sample.state(), to_);
-    ManipulationMetric::Query query;
-    metric_.makeQuery(sample, true, query);
-    MetricPoint vertex;
-    metric_.makePoint(from_, vertex);
-    const ManipulationMetric::ObjectCost cost = metric_.objectCost(vertex, query);
-    EXPECT_EQ(metric_.distance(vertex, query, cost, exact - 1e-3), INF);
+    const ManipulationMetric::ObjectCost cost = queryFromTo();
+    EXPECT_EQ(metric_.distance(vertex_, query_, cost, exact - 1e-3), INF);
 }
 
 TEST_F(MobileMetric, UndefinedPartsOfAQueryDoNotCount)

@@ -1,7 +1,7 @@
 // Tests for ManipulationStateSpace.
 #include "ompl_mm/base/ManipulationStateSpace.h"
-#include "ompl_mm/geometric/ManipulationSetup.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <ompl/base/ScopedState.h>
 
@@ -11,40 +11,20 @@
 #include <sstream>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
 
 namespace
 {
-    Scene mobileBlocked()
-    {
-        return loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
-    }
-
-    void setRobot(const ManipulationStateSpace &space, ob::State *state, double x, double y)
-    {
-        space.robotValues(state)[0] = x;
-        space.robotValues(state)[1] = y;
-    }
-
-    void setObject(const ManipulationStateSpace &space, ob::State *state, unsigned int i, double x, double y,
-                   double z = 0.0, double yaw = 0.0)
-    {
-        space.setObjectPose(state, i, {Eigen::Vector3d(x, y, z), yaw});
-    }
-
-    class MobileSpace : public ::testing::Test
+    class MobileSpace : public MobileBlockedTest
     {
     protected:
-        MobileSpace() : setup_(mobileBlocked()), space_(*setup_.manipulationSpace())
+        MobileSpace()
         {
             setup_.getSpaceInformation()->setup();
-            start_ = space_.allocState();
-            space_.copyState(start_, setup_.getProblemDefinition()->getStartState(0));
+            start_ = startCopy();
         }
-        ~MobileSpace() override { space_.freeState(start_); }
 
-        ManipulationSetup setup_;
-        ManipulationStateSpace &space_;
         ob::State *start_;
     };
 }  // namespace
@@ -186,31 +166,18 @@ TEST(ManipulationStateSpaceArm, HeldObjectTurnsWithARevoluteTool)
 {
     // one revolute joint about z at (0, 0, 1), hand 0.5 m along the arm: a held object keeps its
     // grasp, so it moves on a circle about the z axis and turns with the arm
-    Scene scene;
-    scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/unit_arm1.urdf";
-    scene.robot.toolLink = "hand";
-    SupportSurface floor;
-    floor.name = "floor";
-    floor.min = Eigen::Vector2d(-2.0, -2.0);
-    floor.max = Eigen::Vector2d(2.0, 2.0);
-    scene.surfaces.push_back(floor);
-    MovableObject cup;
-    cup.name = "cup";
-    cup.shape.kind = Shape::Kind::Cylinder;
-    cup.shape.radius = 0.05;
-    cup.shape.length = 0.1;
-    scene.objects.push_back(cup);
-    auto model = std::make_shared<ManipulationModel>(
-        scene, RobotModel::fromUrdfFile(OMPL_MM_TEST_DATA_DIR "/unit_arm1.urdf"));
-    ManipulationStateSpace space(model);
+    Scene scene = unitArmScene();
+    scene.surfaces.push_back(supportSurface("floor", Eigen::Vector2d(-2.0, -2.0), Eigen::Vector2d(2.0, 2.0)));
+    scene.objects.push_back(cylinderObject("cup", 0.05, 0.1));
+    ManipulationStateSpace space(makeModel(scene));
     ob::State *from = space.allocState();
     ob::State *to = space.allocState();
     ob::State *at = space.allocState();
     const double radius = 0.6, height = 0.8, theta0 = 0.0, theta1 = M_PI / 2;
     space.robotValues(from)[0] = theta0;
     space.robotValues(to)[0] = theta1;
-    space.setObjectPose(from, 0, {Eigen::Vector3d(radius, 0, height), 0.0});
-    space.setObjectPose(to, 0, {Eigen::Vector3d(0, radius, height), theta1});
+    setObject(space, from, 0, radius, 0, height, 0.0);
+    setObject(space, to, 0, 0, radius, height, theta1);
     for (double t : {0.0, 0.25, 0.5, 1.0})
     {
         space.interpolate(from, to, t, at);

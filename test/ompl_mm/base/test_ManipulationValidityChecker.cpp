@@ -1,7 +1,7 @@
 // Tests for ManipulationValidityChecker.
 #include "ompl_mm/base/ManipulationValidityChecker.h"
-#include "ompl_mm/geometric/ManipulationSetup.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <ompl/base/SpaceInformation.h>
 
@@ -11,42 +11,24 @@
 #include <limits>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
 
 namespace
 {
     constexpr double RADIUS = 0.2;  // robot disc and every object of MOBILE BLOCKED
 
-    class MobileChecker : public ::testing::Test
+    class MobileChecker : public MobileBlockedTest
     {
     protected:
-        MobileChecker()
-            : setup_(loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml")),
-              space_(*setup_.manipulationSpace()),
-              checker_(*setup_.validityChecker())
-        {
-            state_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
-        }
-        ~MobileChecker() override { space_.freeState(state_); }
-
-        void robotAt(double x, double y)
-        {
-            space_.robotValues(state_)[0] = x;
-            space_.robotValues(state_)[1] = y;
-        }
+        void robotAt(double x, double y) { setRobot(space_, state_, x, y); }
         void objectAt(unsigned int i, double x, double y, double z = 0.0)
         {
-            space_.setObjectPose(state_, i, {Eigen::Vector3d(x, y, z), 0.0});
-        }
-        static bool contains(const std::string &text, const std::string &part)
-        {
-            return text.find(part) != std::string::npos;
+            setObject(space_, state_, i, x, y, z);
         }
 
-        ManipulationSetup setup_;
-        const ManipulationStateSpace &space_;
-        ManipulationValidityChecker &checker_;
-        ob::State *state_;
+        ManipulationValidityChecker &checker_ = *setup_.validityChecker();
+        ob::State *state_ = startCopy();
     };
 }  // namespace
 
@@ -162,7 +144,7 @@ TEST_F(MobileChecker, NanObjectPoseIsInvalid)
     objectAt(0, nan, 0.3);
     EXPECT_FALSE(checker_.isValid(state_));
     objectAt(0, -2.0, 0.3);
-    space_.setObjectPose(state_, 0, {Eigen::Vector3d(-2.0, 0.3, 0.0), nan});
+    setObject(space_, state_, 0, -2.0, 0.3, 0.0, nan);
     EXPECT_FALSE(checker_.isValid(state_));
 }
 
@@ -178,48 +160,34 @@ TEST(ManipulationValidityCheckerTable, RestingObjectMayTouchItsSurfaceObstacle)
     table.shape.boxSize = Eigen::Vector3d(1.0, 1.0, 0.43);
     table.pose.translation() = Eigen::Vector3d(1.0, 1.0, 0.215);
     scene.obstacles.push_back(table);
-    SupportSurface floor;
-    floor.name = "floor";
-    floor.min = Eigen::Vector2d(-2.5, -2.5);
-    floor.max = Eigen::Vector2d(2.5, 2.5);
-    SupportSurface top;
-    top.name = "table_top";
-    top.min = Eigen::Vector2d(0.5, 0.5);
-    top.max = Eigen::Vector2d(1.5, 1.5);
-    top.height = 0.43;
+    SupportSurface top =
+        supportSurface("table_top", Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(1.5, 1.5), 0.43);
     top.obstacle = "table";
-    scene.surfaces = {floor, top};
-    MovableObject cup;
-    cup.name = "cup";
-    cup.shape.kind = Shape::Kind::Cylinder;
-    cup.shape.radius = 0.1;
-    cup.shape.length = 0.2;
-    scene.objects.push_back(cup);
+    scene.surfaces = {supportSurface("floor", Eigen::Vector2d(-2.5, -2.5), Eigen::Vector2d(2.5, 2.5)), top};
+    scene.objects.push_back(cylinderObject("cup", 0.1, 0.2));
 
-    auto model = std::make_shared<ManipulationModel>(scene, RobotModel::fromUrdfFile(scene.robot.urdfFile));
-    auto space = std::make_shared<ManipulationStateSpace>(model);
+    auto space = std::make_shared<ManipulationStateSpace>(makeModel(scene));
     auto si = std::make_shared<ob::SpaceInformation>(space);
     ManipulationValidityChecker checker(si);
     ob::State *state = space->allocState();
-    space->robotValues(state)[0] = -1.0;
-    space->robotValues(state)[1] = -1.0;
+    setRobot(*space, state, -1.0, -1.0);
 
-    space->setObjectPose(state, 0, {Eigen::Vector3d(1.0, 1.0, 0.43), 0.0});
+    setObject(*space, state, 0, 1.0, 1.0, 0.43);
     ASSERT_EQ(space->restingSurface(state, 0), 1);
     EXPECT_TRUE(checker.isValid(state)) << checker.explain(state);
 
     // 1 cm lower it rests on nothing (held) and sinks into the table
-    space->setObjectPose(state, 0, {Eigen::Vector3d(1.0, 1.0, 0.42), 0.0});
+    setObject(*space, state, 0, 1.0, 1.0, 0.42);
     ASSERT_LT(space->restingSurface(state, 0), 0);
     EXPECT_FALSE(checker.isValid(state));
     const std::string why = checker.explain(state);
-    EXPECT_NE(why.find("table"), std::string::npos) << why;
-    EXPECT_NE(why.find("cup"), std::string::npos) << why;
+    EXPECT_TRUE(contains(why, "table")) << why;
+    EXPECT_TRUE(contains(why, "cup")) << why;
 
     // on the floor beside the table it is valid again; pushed into the table's side it is not
-    space->setObjectPose(state, 0, {Eigen::Vector3d(0.3, 1.0, 0.0), 0.0});
+    setObject(*space, state, 0, 0.3, 1.0);
     EXPECT_TRUE(checker.isValid(state)) << checker.explain(state);
-    space->setObjectPose(state, 0, {Eigen::Vector3d(0.45, 1.0, 0.0), 0.0});
+    setObject(*space, state, 0, 0.45, 1.0);
     EXPECT_FALSE(checker.isValid(state));
     space->freeState(state);
 }

@@ -1,44 +1,30 @@
 // Tests for PartialState.
 #include "ompl_mm/base/PartialState.h"
-#include "ompl_mm/geometric/ManipulationSetup.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
 
 namespace
 {
-    class MobilePartial : public ::testing::Test
+    class MobilePartial : public MobileBlockedTest
     {
     protected:
-        MobilePartial()
-            : setup_(loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml")), space_(*setup_.manipulationSpace())
-        {
-            fill_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
-            out_ = space_.allocState();
-        }
-        ~MobilePartial() override
-        {
-            space_.freeState(fill_);
-            space_.freeState(out_);
-        }
-
         /** A partial state whose every part differs from the start. */
         void moveEverything(PartialState &partial)
         {
             space_.copyState(partial.state(), fill_);
-            space_.robotValues(partial.state())[0] = -0.3;
-            space_.robotValues(partial.state())[1] = 0.4;
+            setRobot(space_, partial.state(), -0.3, 0.4);
             for (unsigned int i = 0; i < space_.objectCount(); ++i)
-                space_.setObjectPose(partial.state(), i, {Eigen::Vector3d(0.1 * i, -0.2 * i, 0.0), 0.5 + i});
+                setObject(space_, partial.state(), i, 0.1 * i, -0.2 * i, 0.0, 0.5 + i);
         }
 
-        ManipulationSetup setup_;
-        const ManipulationStateSpace &space_;
-        ob::State *fill_;
-        ob::State *out_;
+        ob::State *fill_ = startCopy();
+        ob::State *out_ = newState();
     };
 }  // namespace
 

@@ -1,31 +1,22 @@
 // Tests for CollisionWorld.
 #include "ompl_mm/collision/CollisionWorld.h"
-#include "ompl_mm/scene/InputError.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 
 namespace
 {
-    Scene mobileBlocked()
-    {
-        return loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
-    }
-
-    ManipulationModelPtr makeModel(const Scene &scene)
-    {
-        return std::make_shared<ManipulationModel>(scene, RobotModel::fromUrdfFile(scene.robot.urdfFile));
-    }
-
     /** MOBILE BLOCKED's start as a configuration that tests may change. */
     class MobileWorld : public ::testing::Test
     {
     protected:
-        MobileWorld() : scene_(mobileBlocked()), model_(makeModel(scene_)), world_(model_)
+        MobileWorld() : scene_(mobileBlockedScene()), model_(makeModel(scene_)), world_(model_)
         {
             joints_ = scene_.robotStart;
             for (const MovableObject &object : scene_.objects)
@@ -152,18 +143,11 @@ TEST_F(MobileWorld, OverlapIsSymmetricInTheObjectPair)
 
 TEST(CollisionWorldInput, SurfaceNamingAnUnknownObstacleThrows)
 {
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     scene.surfaces[0].obstacle = "no_such_table";
     const ManipulationModelPtr model = makeModel(scene);
-    try
-    {
-        CollisionWorld world(model);
-        FAIL() << "no InputError";
-    }
-    catch (const InputError &e)
-    {
-        const std::string what = e.what();
-        EXPECT_EQ(what.rfind(scene.surfaces[0].where.str() + ": ", 0), 0u) << what;
-        EXPECT_NE(what.find("no_such_table"), std::string::npos) << what;
-    }
+    const std::string what = inputErrorOf([&] { CollisionWorld world(model); });
+    ASSERT_NE(what, "") << "no InputError";
+    EXPECT_TRUE(startsWith(what, scene.surfaces[0].where.str() + ": ")) << what;
+    EXPECT_TRUE(contains(what, "no_such_table")) << what;
 }

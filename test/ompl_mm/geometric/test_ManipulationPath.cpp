@@ -1,13 +1,14 @@
 // Tests for ManipulationPath.
 #include "ompl_mm/geometric/ManipulationPath.h"
-#include "ompl_mm/geometric/ManipulationSetup.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
 
 namespace
@@ -18,38 +19,30 @@ namespace
         return {PrimitiveKind::Push, object};
     }
 
-    class MobilePath : public ::testing::Test
+    class MobilePath : public MobileBlockedTest
     {
     protected:
         MobilePath()
-            : setup_(loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml")),
-              si_(setup_.getSpaceInformation()),
-              space_(*setup_.manipulationSpace()),
-              path_(si_)
         {
             si_->setup();
-            state_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
+            state_ = startCopy();
         }
-        ~MobilePath() override { space_.freeState(state_); }
 
         /** state_ with the robot moved to (x, y); returns it for appending. */
         const ob::State *robotAt(double x, double y)
         {
-            space_.robotValues(state_)[0] = x;
-            space_.robotValues(state_)[1] = y;
+            setRobot(space_, state_, x, y);
             return state_;
         }
         const ob::State *objectAt(unsigned int i, double x, double y)
         {
-            space_.setObjectPose(state_, i, {Eigen::Vector3d(x, y, 0.0), 0.0});
+            setObject(space_, state_, i, x, y);
             return state_;
         }
         double robotX(std::size_t i) const { return space_.robotValues(path_.getState(i))[0]; }
 
-        ManipulationSetup setup_;
-        ob::SpaceInformationPtr si_;
-        const ManipulationStateSpace &space_;
-        ManipulationPath path_;
+        ob::SpaceInformationPtr si_ = setup_.getSpaceInformation();
+        ManipulationPath path_{si_};
         ob::State *state_;
     };
 }  // namespace

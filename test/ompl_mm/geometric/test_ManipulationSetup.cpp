@@ -1,48 +1,18 @@
 // Tests for ManipulationSetup.
 #include "ompl_mm/geometric/ManipulationSetup.h"
 #include "ompl_mm/primitives/PushMobile.h"
-#include "ompl_mm/scene/InputError.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
-
-namespace
-{
-    Scene mobileBlocked()
-    {
-        return loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
-    }
-
-    /** The InputError message of building a setup for scene, or "" when it builds. */
-    std::string setupError(const Scene &scene)
-    {
-        try
-        {
-            ManipulationSetup setup(scene);
-        }
-        catch (const InputError &e)
-        {
-            return e.what();
-        }
-        return "";
-    }
-
-    bool startsWith(const std::string &text, const std::string &prefix)
-    {
-        return text.compare(0, prefix.size(), prefix) == 0;
-    }
-    bool has(const std::string &text, const std::string &part)
-    {
-        return text.find(part) != std::string::npos;
-    }
-}  // namespace
 
 TEST(ManipulationSetup, BuildsMobileBlocked)
 {
-    const Scene scene = mobileBlocked();
+    const Scene scene = mobileBlockedScene();
     ManipulationSetup setup(scene);
     ASSERT_TRUE(setup.model());
     EXPECT_EQ(setup.model()->objectCount(), 4u);
@@ -60,7 +30,7 @@ TEST(ManipulationSetup, BuildsMobileBlocked)
 
 TEST(ManipulationSetup, StartStateIsTheScenes)
 {
-    const Scene scene = mobileBlocked();
+    const Scene scene = mobileBlockedScene();
     ManipulationSetup setup(scene);
     ASSERT_EQ(setup.getProblemDefinition()->getStartStateCount(), 1u);
     const ob::State *start = setup.getProblemDefinition()->getStartState(0);
@@ -78,7 +48,7 @@ TEST(ManipulationSetup, StartStateIsTheScenes)
 
 TEST(ManipulationSetup, PlannerParametersAreApplied)
 {
-    ManipulationSetup setup(mobileBlocked());
+    ManipulationSetup setup(mobileBlockedScene());
     EXPECT_DOUBLE_EQ(setup.mopl()->getConnectStep(), 0.05);
     EXPECT_DOUBLE_EQ(setup.mopl()->getVertexStep(), 0.35);
     EXPECT_DOUBLE_EQ(setup.mopl()->metricWeights().movingObjectPenalty, 0.6);
@@ -98,43 +68,43 @@ TEST(ManipulationSetup, PlannerParametersAreApplied)
 
 TEST(ManipulationSetup, NoSolutionBeforeSolving)
 {
-    ManipulationSetup setup(mobileBlocked());
+    ManipulationSetup setup(mobileBlockedScene());
     EXPECT_THROW(setup.manipulationPath(), ompl::Exception);
 }
 
 TEST(ManipulationSetupInput, StartJointCountIsReportedAtTheStartLine)
 {
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     ASSERT_GT(scene.robotStartWhere.line, 0);
     scene.robotStart = {1.9};
     const std::string what = setupError(scene);
     EXPECT_TRUE(startsWith(what, scene.robotStartWhere.str() + ": ")) << what;
-    EXPECT_TRUE(has(what, "1 joint values")) << what;
-    EXPECT_TRUE(has(what, "2 moving joints")) << what;
+    EXPECT_TRUE(contains(what, "1 joint values")) << what;
+    EXPECT_TRUE(contains(what, "2 moving joints")) << what;
 }
 
 TEST(ManipulationSetupInput, StartInCollisionNamesTheBodies)
 {
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     scene.robotStart = {-1.0, 0.0};  // inside block1
     const std::string what = setupError(scene);
     EXPECT_TRUE(startsWith(what, scene.robotStartWhere.str() + ": ")) << what;
-    EXPECT_TRUE(has(what, "block1")) << what;
-    EXPECT_TRUE(has(what, "robot link 'body'")) << what;
+    EXPECT_TRUE(contains(what, "block1")) << what;
+    EXPECT_TRUE(contains(what, "robot link 'body'")) << what;
 
-    scene = mobileBlocked();
+    scene = mobileBlockedScene();
     scene.objects[3].start.position = Eigen::Vector3d(1.9, 1.7, 0.0);  // obj4 under the robot
     const std::string objects = setupError(scene);
-    EXPECT_TRUE(has(objects, "obj4")) << objects;
+    EXPECT_TRUE(contains(objects, "obj4")) << objects;
 }
 
 TEST(ManipulationSetupInput, StartJointOutsideLimitsIsReported)
 {
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     scene.robotStart = {1.9, 2.7};
     const std::string what = setupError(scene);
     EXPECT_TRUE(startsWith(what, scene.robotStartWhere.str() + ": ")) << what;
-    EXPECT_TRUE(has(what, "'y'")) << what;
+    EXPECT_TRUE(contains(what, "'y'")) << what;
 }
 
 TEST(ManipulationSetupInput, ObjectStartOffEverySurfaceIsReportedAtTheObject)
@@ -142,23 +112,23 @@ TEST(ManipulationSetupInput, ObjectStartOffEverySurfaceIsReportedAtTheObject)
     for (const Eigen::Vector3d &position :
          {Eigen::Vector3d(0.8, -0.1, 0.3), Eigen::Vector3d(0.8, -0.1, -0.01)})
     {
-        Scene scene = mobileBlocked();
+        Scene scene = mobileBlockedScene();
         scene.objects[1].start.position = position;
         const std::string what = setupError(scene);
         EXPECT_TRUE(startsWith(what, scene.objects[1].where.str() + ": ")) << what;
-        EXPECT_TRUE(has(what, "'obj2'")) << what;
-        EXPECT_TRUE(has(what, "no support surface")) << what;
+        EXPECT_TRUE(contains(what, "'obj2'")) << what;
+        EXPECT_TRUE(contains(what, "no support surface")) << what;
     }
 }
 
 TEST(ManipulationSetupInput, UnknownPlannerParameterIsNamed)
 {
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     scene.plannerParams.push_back({"warp_speed", "9", {"unit_params.xml", 42}});
     const std::string what = setupError(scene);
     EXPECT_TRUE(startsWith(what, "unit_params.xml:42: ")) << what;
-    EXPECT_TRUE(has(what, "'warp_speed'")) << what;
-    EXPECT_TRUE(has(what, "connect_step")) << what;  // the known names are listed
+    EXPECT_TRUE(contains(what, "'warp_speed'")) << what;
+    EXPECT_TRUE(contains(what, "connect_step")) << what;  // the known names are listed
 }
 
 TEST(ManipulationSetupInput, BadPlannerParameterValueIsNamed)
@@ -169,46 +139,46 @@ TEST(ManipulationSetupInput, BadPlannerParameterValueIsNamed)
                                                                {"undefined_probability", "1.5"}};
     for (const auto &[name, value] : bad)
     {
-        Scene scene = mobileBlocked();
+        Scene scene = mobileBlockedScene();
         scene.plannerParams.push_back({name, value, {"unit_params.xml", 7}});
         const std::string what = setupError(scene);
         EXPECT_TRUE(startsWith(what, "unit_params.xml:7: ")) << name << "=" << value << ": " << what;
-        EXPECT_TRUE(has(what, "'" + name + "'")) << what;
-        EXPECT_TRUE(has(what, "'" + value + "'")) << what;
+        EXPECT_TRUE(contains(what, "'" + name + "'")) << what;
+        EXPECT_TRUE(contains(what, "'" + value + "'")) << what;
     }
 }
 
 TEST(ManipulationSetupInput, UnknownPrimitiveTypeIsReportedAtItsLine)
 {
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     scene.primitives.push_back({"teleport", {}, {"unit_prims.xml", 9}});
     const std::string what = setupError(scene);
     EXPECT_TRUE(startsWith(what, "unit_prims.xml:9: ")) << what;
-    EXPECT_TRUE(has(what, "teleport")) << what;
+    EXPECT_TRUE(contains(what, "teleport")) << what;
 }
 
 TEST(ManipulationSetupInput, OnlyTheMoplPlannerIsKnown)
 {
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     scene.planner = "rrt_connect";
     const std::string what = setupError(scene);
     EXPECT_TRUE(startsWith(what, scene.file)) << what;
-    EXPECT_TRUE(has(what, "rrt_connect")) << what;
-    EXPECT_TRUE(has(what, "mopl")) << what;
+    EXPECT_TRUE(contains(what, "rrt_connect")) << what;
+    EXPECT_TRUE(contains(what, "mopl")) << what;
 }
 
 TEST(ManipulationSetupInput, RobotFaultsAreReportedAtTheRobotLine)
 {
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     ASSERT_GT(scene.robot.where.line, 0);
     scene.robot.toolLink = "gripper";
     std::string what = setupError(scene);
     EXPECT_TRUE(startsWith(what, scene.robot.where.str() + ": ")) << what;
-    EXPECT_TRUE(has(what, "gripper")) << what;
+    EXPECT_TRUE(contains(what, "gripper")) << what;
 
-    scene = mobileBlocked();
+    scene = mobileBlockedScene();
     scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/unit_no_such_robot.urdf";
     what = setupError(scene);
     EXPECT_TRUE(startsWith(what, scene.robot.where.str() + ": ")) << what;
-    EXPECT_TRUE(has(what, "unit_no_such_robot.urdf")) << what;
+    EXPECT_TRUE(contains(what, "unit_no_such_robot.urdf")) << what;
 }

@@ -8,16 +8,16 @@
 #include <vector>
 
 #include "ompl_mm/io/SceneSvg.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <ompl/base/ScopedState.h>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 
 namespace
 {
-    const std::string SCENE = std::string(OMPL_MM_SCENES_DIR) + "/mobile_blocked.xml";
-
     std::string render(const ManipulationSetup &setup, const ManipulationPath *path)
     {
         std::ostringstream out;
@@ -72,8 +72,7 @@ namespace
 
         ompl::base::ScopedState<> state(setup.getStateSpace());
         state = start;
-        space.robotValues(state.get())[0] = 1.21;
-        space.robotValues(state.get())[1] = -0.1;
+        setRobot(space, state.get(), 1.21, -0.1);
         path.appendLabelled(state.get(), {PrimitiveKind::Transit, -1});
 
         space.robotValues(state.get())[0] = 0.81;
@@ -96,7 +95,7 @@ namespace
 
 TEST(SceneSvg, SceneOnlyIsWellFormedWithOneElementPerObstacleAndObject)
 {
-    const Scene scene = loadScene(SCENE);
+    const Scene scene = mobileBlockedScene();
     const ManipulationSetup setup(scene);
     tinyxml2::XMLDocument doc;
     ASSERT_EQ(doc.Parse(render(setup, nullptr).c_str()), tinyxml2::XML_SUCCESS) << doc.ErrorStr();
@@ -127,7 +126,7 @@ TEST(SceneSvg, SceneOnlyIsWellFormedWithOneElementPerObstacleAndObject)
 
 TEST(SceneSvg, PathIsColouredByPrimitiveWithAPushArrow)
 {
-    const ManipulationSetup setup(loadScene(SCENE));
+    const ManipulationSetup setup(mobileBlockedScene());
     const ManipulationPath path = pushPath(setup);
     ASSERT_EQ(path.checkLabels(), "");
     const std::string svg = render(setup, &path);
@@ -158,7 +157,7 @@ TEST(SceneSvg, PathIsColouredByPrimitiveWithAPushArrow)
 
 TEST(SceneSvg, NamesAreEscaped)
 {
-    Scene scene = loadScene(SCENE);
+    Scene scene = mobileBlockedScene();
     scene.name = "a<b & \"c\"";
     scene.objects[0].name = "obj<&>1";
     const ManipulationSetup setup(scene);
@@ -172,7 +171,7 @@ TEST(SceneSvg, NamesAreEscaped)
 
 TEST(SceneSvg, WorldYIsUpAndTheScaleIsTheSameOnBothAxes)
 {
-    const Scene scene = loadScene(SCENE);
+    const Scene scene = mobileBlockedScene();
     const ManipulationSetup setup(scene);
     tinyxml2::XMLDocument doc;
     ASSERT_EQ(doc.Parse(render(setup, nullptr).c_str()), tinyxml2::XML_SUCCESS) << doc.ErrorStr();

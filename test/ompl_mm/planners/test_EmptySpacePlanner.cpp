@@ -1,13 +1,14 @@
 // Tests for EmptySpacePlanner.
-#include "ompl_mm/geometric/ManipulationSetup.h"
 #include "ompl_mm/planners/EmptySpacePlanner.h"
 #include "ompl_mm/primitives/PushMobile.h"
 #include "ompl_mm/primitives/Transit.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
 using Outcome = EmptySpacePlanner::Outcome;
 
@@ -15,35 +16,10 @@ namespace
 {
     constexpr unsigned int OBJ2 = 1, OBJ4 = 3;
 
-    class MobileEsp : public ::testing::Test
+    class MobileEsp : public MobileBlockedTest
     {
     protected:
-        MobileEsp()
-            : setup_(loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml")),
-              space_(*setup_.manipulationSpace()),
-              esp_(&space_,
-                   {std::make_shared<Transit>(&space_), std::make_shared<PushMobile>(&space_, 0.41)}),
-              trajectory_(&space_)
-        {
-            from_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
-            to_ = space_.cloneState(from_);
-            rng_.setLocalSeed(5);
-        }
-        ~MobileEsp() override
-        {
-            space_.freeState(from_);
-            space_.freeState(to_);
-        }
-
-        void robot(ob::State *s, double x, double y)
-        {
-            space_.robotValues(s)[0] = x;
-            space_.robotValues(s)[1] = y;
-        }
-        void object(ob::State *s, unsigned int i, double x, double y, double z = 0.0)
-        {
-            space_.setObjectPose(s, i, {Eigen::Vector3d(x, y, z), space_.objectYaw(s, i)});
-        }
+        MobileEsp() { rng_.setLocalSeed(5); }
 
         /** Every segment does what its label says: a transit moves no object, a push only its own. */
         void expectSegmentsMatchLabels(const Trajectory &t) const
@@ -57,19 +33,18 @@ namespace
                     }
         }
 
-        ManipulationSetup setup_;
-        const ManipulationStateSpace &space_;
-        EmptySpacePlanner esp_;
-        Trajectory trajectory_;
+        EmptySpacePlanner esp_{
+            &space_, {std::make_shared<Transit>(&space_), std::make_shared<PushMobile>(&space_, 0.41)}};
+        Trajectory trajectory_{&space_};
         ompl::RNG rng_;
-        ob::State *from_;
-        ob::State *to_;
+        ob::State *from_ = startCopy();
+        ob::State *to_ = startCopy();
     };
 }  // namespace
 
 TEST_F(MobileEsp, RobotOnlyTargetIsOneTransit)
 {
-    robot(to_, 0.0, 0.0);
+    setRobot(space_, to_, 0.0, 0.0);
     ASSERT_EQ(esp_.plan(from_, to_, trajectory_, rng_), Outcome::Reached);
     ASSERT_EQ(trajectory_.size(), 2u);
     EXPECT_TRUE(space_.equalStates(trajectory_.state(0), from_));
@@ -79,8 +54,8 @@ TEST_F(MobileEsp, RobotOnlyTargetIsOneTransit)
 
 TEST_F(MobileEsp, SlidingObjectIsPushedThenTheRobotLeaves)
 {
-    object(to_, OBJ2, 1.3, -0.1);
-    robot(to_, 0.0, 0.0);
+    setObject(space_, to_, OBJ2, 1.3, -0.1);
+    setRobot(space_, to_, 0.0, 0.0);
     ASSERT_EQ(esp_.plan(from_, to_, trajectory_, rng_), Outcome::Reached);
     EXPECT_TRUE(space_.equalStates(trajectory_.back(), to_));
     // to the standoff, the push, to the robot's target: the only order that works
@@ -93,9 +68,9 @@ TEST_F(MobileEsp, SlidingObjectIsPushedThenTheRobotLeaves)
 
 TEST_F(MobileEsp, TwoSlidingObjectsAreBothPushed)
 {
-    object(to_, OBJ2, 1.0, -0.4);
-    object(to_, OBJ4, 0.6, 1.9);
-    robot(to_, 0.0, 0.0);
+    setObject(space_, to_, OBJ2, 1.0, -0.4);
+    setObject(space_, to_, OBJ4, 0.6, 1.9);
+    setRobot(space_, to_, 0.0, 0.0);
     ASSERT_EQ(esp_.plan(from_, to_, trajectory_, rng_), Outcome::Reached);
     EXPECT_TRUE(space_.equalStates(trajectory_.back(), to_));
     unsigned int pushes2 = 0, pushes4 = 0;
@@ -119,11 +94,11 @@ TEST_F(MobileEsp, EqualStatesAreAlreadyThere)
 
 TEST_F(MobileEsp, LiftedTargetIsNeverReached)
 {
-    object(to_, OBJ2, 0.8, -0.1, 0.3);
+    setObject(space_, to_, OBJ2, 0.8, -0.1, 0.3);
     EXPECT_EQ(esp_.plan(from_, to_, trajectory_, rng_), Outcome::Failed);
     EXPECT_EQ(trajectory_.size(), 1u);
-    robot(to_, 0.0, 0.0);
-    object(to_, OBJ4, 0.6, 1.9);
+    setRobot(space_, to_, 0.0, 0.0);
+    setObject(space_, to_, OBJ4, 0.6, 1.9);
     const Outcome outcome = esp_.plan(from_, to_, trajectory_, rng_);
     EXPECT_TRUE(outcome == Outcome::Failed || outcome == Outcome::Partial);
     EXPECT_FALSE(space_.equalStates(trajectory_.back(), to_));
@@ -132,9 +107,9 @@ TEST_F(MobileEsp, LiftedTargetIsNeverReached)
 TEST_F(MobileEsp, UnreachableTurnGivesPartial)
 {
     // no primitive turns objects: obj2 can be pushed, obj4's new yaw stays out of reach
-    object(to_, OBJ2, 1.3, -0.1);
+    setObject(space_, to_, OBJ2, 1.3, -0.1);
     space_.setObjectPose(to_, OBJ4, {space_.objectPosition(from_, OBJ4), 1.0});
-    robot(to_, 0.0, 0.0);
+    setRobot(space_, to_, 0.0, 0.0);
     ASSERT_EQ(esp_.plan(from_, to_, trajectory_, rng_), Outcome::Partial);
     EXPECT_GT(trajectory_.size(), 1u);
     EXPECT_FALSE(space_.objectMoves(trajectory_.back(), to_, OBJ2));
@@ -145,7 +120,7 @@ TEST_F(MobileEsp, UnreachableTurnGivesPartial)
 TEST_F(MobileEsp, NoPrimitivesFails)
 {
     EmptySpacePlanner empty(&space_, {});
-    robot(to_, 0.0, 0.0);
+    setRobot(space_, to_, 0.0, 0.0);
     EXPECT_EQ(empty.plan(from_, to_, trajectory_, rng_), Outcome::Failed);
     EXPECT_TRUE(empty.primitives().empty());
     EXPECT_EQ(esp_.primitives().size(), 2u);
@@ -153,9 +128,9 @@ TEST_F(MobileEsp, NoPrimitivesFails)
 
 TEST_F(MobileEsp, SameSeedSameTrajectory)
 {
-    object(to_, OBJ2, 1.0, -0.4);
-    object(to_, OBJ4, 0.6, 1.9);
-    robot(to_, -0.5, 1.0);
+    setObject(space_, to_, OBJ2, 1.0, -0.4);
+    setObject(space_, to_, OBJ4, 0.6, 1.9);
+    setRobot(space_, to_, -0.5, 1.0);
     Trajectory other(&space_);
     for (int run = 0; run < 5; ++run)
     {

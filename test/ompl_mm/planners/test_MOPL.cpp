@@ -1,7 +1,6 @@
 // Tests for MOPL: solves MOBILE BLOCKED for fixed seeds and re-checks every solution with an
 // independent planar geometry model (discs and rectangles, no FCL), then checks reproducibility.
-#include "ompl_mm/geometric/ManipulationSetup.h"
-#include "ompl_mm/scene/SceneLoader.h"
+#include "common/MobileBlocked.h"
 
 #include <ompl/util/Console.h>
 
@@ -10,40 +9,49 @@
 #include <cmath>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 
 namespace
 {
-    constexpr double TIME_LIMIT = 60.0;  // a bound, so that a regression fails instead of hanging
-    constexpr double RADIUS = 0.2;       // robot and objects are discs of this radius seen from above
-    constexpr double STANDOFF = 0.41;
+    constexpr double TIME_LIMIT = 60.0;    // a bound, so that a regression fails instead of hanging
+    constexpr double RADIUS = 0.2;         // robot and objects are discs of this radius seen from above
+    constexpr double CONNECT_STEP = 0.05;  // the scene's collision-check step along motions
 
-    Scene mobileBlocked()
+    /** Deepest overlap a straight motion checked every CONNECT_STEP can hide: a disc passing
+        another (radii summing to `reach`) is checked at most half a step from its closest point. */
+    double hiddenOverlap(double reach)
     {
-        return loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
+        return reach - std::sqrt(reach * reach - 0.25 * CONNECT_STEP * CONNECT_STEP);
     }
 
+    constexpr double STANDOFF = 0.41;
+
     /** True when a disc at p overlaps the box footprint of an obstacle (axis-aligned here). */
-    bool discHitsBox(const Eigen::Vector2d &p, const Obstacle &box)
+    bool discHitsBox(const Eigen::Vector2d &p, const Obstacle &box, double allowed)
     {
         const Eigen::Vector2d centre = box.pose.translation().head<2>();
         const Eigen::Vector2d half = 0.5 * box.shape.boxSize.head<2>();
         const Eigen::Vector2d closest = p.cwiseMax(centre - half).cwiseMin(centre + half);
-        return (closest - p).norm() < RADIUS - 1e-9;
+        return (closest - p).norm() < RADIUS - allowed;
     }
 
-    /** Independent validity of a MOBILE BLOCKED configuration in the plane. */
+    /** Independent validity of a MOBILE BLOCKED configuration in the plane; waypoints must be
+        free (exact = true), states between them may overlap by what the check step can hide. */
     std::string planarFault(const Eigen::Vector2d &robot, const std::vector<Eigen::Vector2d> &objects,
-                            const Scene &scene)
+                            const Scene &scene, bool exact)
     {
+        // passing a box corner is passing a point: the reach is the disc's own radius
+        const double boxAllowed = exact ? 1e-9 : hiddenOverlap(RADIUS);
+        const double discAllowed = exact ? 1e-9 : hiddenOverlap(2 * RADIUS);
         std::vector<Eigen::Vector2d> discs{robot};
         discs.insert(discs.end(), objects.begin(), objects.end());
         for (std::size_t a = 0; a < discs.size(); ++a)
         {
             for (const Obstacle &obstacle : scene.obstacles)
-                if (discHitsBox(discs[a], obstacle))
+                if (discHitsBox(discs[a], obstacle, boxAllowed))
                     return "disc " + std::to_string(a) + " hits " + obstacle.name;
             for (std::size_t b = a + 1; b < discs.size(); ++b)
-                if ((discs[a] - discs[b]).norm() < 2 * RADIUS - 1e-9)
+                if ((discs[a] - discs[b]).norm() < 2 * RADIUS - discAllowed)
                     return "discs " + std::to_string(a) + " and " + std::to_string(b) + " overlap";
         }
         return {};
@@ -98,13 +106,15 @@ namespace
                 }
                 EXPECT_NEAR((robotAt(b) - robotAt(a) - motion).norm(), 0.0, 1e-9) << "push segment " << k;
             }
-            // every state along the segment, at 1 cm, is free in the planar model
+            // waypoints are free in the planar model; states between them, at 1 cm, overlap no more
+            // than the planner's check step can hide
             const double length = std::max((robotAt(b) - robotAt(a)).norm(), 1e-3);
             const int steps = static_cast<int>(std::ceil(length / 0.01));
             for (int j = 0; j <= steps; ++j)
             {
                 space.interpolate(a, b, static_cast<double>(j) / steps, between);
-                const std::string fault = planarFault(robotAt(between), objectsAt(between), scene);
+                const bool waypoint = j == 0 || j == steps;
+                const std::string fault = planarFault(robotAt(between), objectsAt(between), scene, waypoint);
                 ASSERT_TRUE(fault.empty()) << "segment " << k << " step " << j << ": " << fault;
             }
         }
@@ -127,7 +137,7 @@ namespace
 
 TEST_P(MOPLOnMobileBlocked, SolvesAndSolutionPassesIndependentRecheck)
 {
-    const Scene scene = mobileBlocked();
+    const Scene scene = mobileBlockedScene();
     ManipulationSetup setup(scene);
     setup.mopl()->setSeed(GetParam());
     ASSERT_EQ(setup.solve(TIME_LIMIT), ompl::base::PlannerStatus::EXACT_SOLUTION);
@@ -143,7 +153,7 @@ INSTANTIATE_TEST_SUITE_P(Seeds, MOPLOnMobileBlocked, ::testing::Values(1u, 2u, 3
 TEST(MOPL, SameSeedGivesSamePath)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-    const Scene scene = mobileBlocked();
+    const Scene scene = mobileBlockedScene();
     std::vector<std::vector<double>> paths[2];
     for (auto &values : paths)
     {
@@ -164,7 +174,7 @@ TEST(MOPL, SameSeedGivesSamePath)
 TEST(MOPL, DifferentSeedsExploreDifferently)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-    const Scene scene = mobileBlocked();
+    const Scene scene = mobileBlockedScene();
     std::uint64_t iterations[2];
     for (unsigned int seed : {1u, 2u})
     {
@@ -178,7 +188,7 @@ TEST(MOPL, DifferentSeedsExploreDifferently)
 
 TEST(MOPL, StartInsideGoalIsSolvedWithoutSearch)
 {
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     scene.robotStart = {0.0, 0.0};
     scene.objects[2].start.position = {-0.9, -0.9, 0.0};
     ManipulationSetup setup(scene);
@@ -190,7 +200,7 @@ TEST(MOPL, StartInsideGoalIsSolvedWithoutSearch)
 TEST(MOPL, ReportsTimeoutWhenGoalIsWalledIn)
 {
     // obj3's goal is free, but walls around it make every push there collide
-    Scene scene = mobileBlocked();
+    Scene scene = mobileBlockedScene();
     Obstacle cage;
     cage.name = "cage";
     cage.shape.kind = Shape::Kind::Box;
@@ -215,14 +225,28 @@ TEST(MOPL, ReportsTimeoutWhenGoalIsWalledIn)
 
 TEST(MOPL, DeclaresEveryTunableParameter)
 {
-    ManipulationSetup setup(mobileBlocked());
-    for (const char *name :
-         {"connect_step", "vertex_step", "smoothing_attempts", "robot_weight", "moving_object_penalty",
-          "move_to_object_penalty", "move_to_object_factor", "contact_distance", "object_sample_probability",
-          "undefined_probability", "start_value_probability", "random_robot_probability"})
+    ManipulationSetup setup(mobileBlockedScene());
+    for (const char *name : {"connect_step", "vertex_step", "smoothing_attempts", "restart_iterations",
+                             "robot_weight", "moving_object_penalty", "move_to_object_penalty",
+                             "move_to_object_factor", "contact_distance", "object_sample_probability",
+                             "undefined_probability", "start_value_probability", "random_robot_probability"})
         EXPECT_TRUE(setup.mopl()->params().hasParam(name)) << name;
     EXPECT_EQ(setup.mopl()->params().getParam("vertex_step")->getValue(), "0.35") << "set by the scene";
     EXPECT_THROW(setup.mopl()->params().setParam("connect_step", "-1"), std::runtime_error);
     EXPECT_THROW(setup.mopl()->params().setParam("undefined_probability", "1.5"), std::runtime_error);
     EXPECT_THROW(setup.mopl()->params().setParam("vertex_step", "abc"), std::runtime_error);
+}
+
+TEST(MOPL, RestartsClearTheTreesAndStillSolve)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    ManipulationSetup setup(mobileBlockedScene());
+    setup.mopl()->setSeed(3);
+    setup.mopl()->setRestartIterations(300);  // far below a typical run: forces restarts
+    ASSERT_EQ(setup.solve(TIME_LIMIT), ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const MOPLStatistics &stats = setup.mopl()->statistics();
+    EXPECT_GT(stats.restarts, 0u);
+    // run k may last 300 * 2^k iterations: the last run is the one that solved
+    EXPECT_LT(stats.iterations, 300u * ((1u << (stats.restarts + 1)) - 1) + 1);
+    EXPECT_TRUE(setup.manipulationPath().check());
 }

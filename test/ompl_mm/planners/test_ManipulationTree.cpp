@@ -1,7 +1,7 @@
 // Tests for ManipulationTree.
-#include "ompl_mm/geometric/ManipulationSetup.h"
 #include "ompl_mm/planners/ManipulationTree.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
@@ -9,30 +9,21 @@
 #include <random>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
 
 namespace
 {
     constexpr double INF = std::numeric_limits<double>::infinity();
 
-    class MobileTree : public ::testing::Test
+    class MobileTree : public MobileBlockedTest
     {
     protected:
         MobileTree()
-            : setup_(loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml")),
-              space_(*setup_.manipulationSpace()),
-              metric_(&space_)
         {
             metric_.weights().movingObjectPenalty = 0.6;
             metric_.weights().moveToObjectPenalty = 0.1;
             metric_.weights().moveToObjectFactor = 1.0;
-            start_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
-            scratch_ = space_.allocState();
-        }
-        ~MobileTree() override
-        {
-            space_.freeState(start_);
-            space_.freeState(scratch_);
         }
 
         double uniform() { return position_(gen_); }
@@ -126,11 +117,9 @@ namespace
             }
         }
 
-        ManipulationSetup setup_;
-        const ManipulationStateSpace &space_;
-        ManipulationMetric metric_;
-        ob::State *start_;
-        ob::State *scratch_;
+        ManipulationMetric metric_{&space_};
+        ob::State *start_ = startCopy();
+        ob::State *scratch_ = newState();
         std::mt19937 gen_{11};
         std::uniform_real_distribution<double> position_{-2.5, 2.5};
     };

@@ -1,7 +1,7 @@
 // Tests for ModalSampler.
-#include "ompl_mm/geometric/ManipulationSetup.h"
 #include "ompl_mm/planners/ModalSampler.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
@@ -9,6 +9,7 @@
 #include <cmath>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
 
 namespace
@@ -40,25 +41,16 @@ namespace
         bool freshOffFloor{false};
     };
 
-    class Sampler : public ::testing::Test
+    class Sampler : public MobileBlockedTest
     {
     protected:
-        explicit Sampler(Scene scene = loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml"))
-            : setup_(scene), space_(*setup_.manipulationSpace())
+        explicit Sampler(const Scene &scene = mobileBlockedScene()) : MobileBlockedTest(scene)
         {
-            start_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
-            goalState_ = space_.cloneState(start_);
-            space_.robotValues(goalState_)[0] = 0.0;
-            space_.robotValues(goalState_)[1] = 0.0;
-            space_.setObjectPose(goalState_, OBJ3, {Eigen::Vector3d(-0.9, -0.9, 0.0), 0.0});
+            setRobot(space_, goalState_, 0.0, 0.0);
+            setObject(space_, goalState_, OBJ3, -0.9, -0.9);
             // obj1 has no goal; giving it a distinct value here shows whether the sampler copies it
-            space_.setObjectPose(goalState_, OBJ1, {Eigen::Vector3d(1.0, 1.0, 0.0), 0.0});
+            setObject(space_, goalState_, OBJ1, 1.0, 1.0);
             EXPECT_TRUE(setup_.manipulationGoal()->isSatisfied(goalState_));
-        }
-        ~Sampler() override
-        {
-            space_.freeState(start_);
-            space_.freeState(goalState_);
         }
 
         Source robotSource(const PartialState &s) const
@@ -121,15 +113,13 @@ namespace
 
         static double rate(int count, int total) { return static_cast<double>(count) / total; }
 
-        ManipulationSetup setup_;
-        const ManipulationStateSpace &space_;
-        ob::State *start_;
-        ob::State *goalState_;
+        ob::State *start_ = startCopy();
+        ob::State *goalState_ = startCopy();
     };
 
     Scene withoutRobotGoal()
     {
-        Scene scene = loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
+        Scene scene = mobileBlockedScene();
         scene.robotGoal.joints.clear();
         return scene;
     }

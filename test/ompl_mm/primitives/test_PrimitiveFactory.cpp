@@ -1,14 +1,14 @@
 // Tests for PrimitiveFactory.
-#include "ompl_mm/geometric/ManipulationSetup.h"
 #include "ompl_mm/primitives/PrimitiveFactory.h"
 #include "ompl_mm/primitives/PushMobile.h"
 #include "ompl_mm/primitives/Transit.h"
-#include "ompl_mm/scene/InputError.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 
 namespace
 {
@@ -38,35 +38,15 @@ namespace
         double seconds_;
     };
 
-    class Factory : public ::testing::Test
+    class Factory : public MobileBlockedTest
     {
     protected:
-        Factory()
-            : setup_(loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml")),
-              space_(setup_.manipulationSpace().get())
-        {
-        }
-
         /** The InputError message of building specs, or "" when it succeeds. */
         std::string error(const std::vector<PrimitiveSpec> &specs) const
         {
-            try
-            {
-                factory_.build(specs, space_);
-            }
-            catch (const InputError &e)
-            {
-                return e.what();
-            }
-            return "";
-        }
-        static bool has(const std::string &text, const std::string &part)
-        {
-            return text.find(part) != std::string::npos;
+            return inputErrorOf([&] { factory_.build(specs, &space_); });
         }
 
-        ManipulationSetup setup_;
-        const ManipulationStateSpace *space_;
         PrimitiveFactory factory_;
     };
 }  // namespace
@@ -74,7 +54,7 @@ namespace
 TEST_F(Factory, BuildsTheBuiltInTypes)
 {
     const auto primitives =
-        factory_.build({spec("transit"), spec("push_mobile", {{"standoff", "0.41"}})}, space_);
+        factory_.build({spec("transit"), spec("push_mobile", {{"standoff", "0.41"}})}, &space_);
     ASSERT_EQ(primitives.size(), 2u);
     EXPECT_TRUE(std::dynamic_pointer_cast<Transit>(primitives[0]));
     const auto push = std::dynamic_pointer_cast<PushMobile>(primitives[1]);
@@ -82,13 +62,13 @@ TEST_F(Factory, BuildsTheBuiltInTypes)
     EXPECT_DOUBLE_EQ(push->standoff(), 0.41);
     EXPECT_EQ(primitives[0]->name(), "transit");
     EXPECT_EQ(primitives[1]->kind(), PrimitiveKind::Push);
-    EXPECT_TRUE(factory_.build({}, space_).empty());
+    EXPECT_TRUE(factory_.build({}, &space_).empty());
 }
 
 TEST_F(Factory, BuildsTheSceneFilePrimitives)
 {
-    const Scene scene = loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
-    const auto primitives = factory_.build(scene.primitives, space_);
+    const Scene scene = mobileBlockedScene();
+    const auto primitives = factory_.build(scene.primitives, &space_);
     ASSERT_EQ(primitives.size(), 2u);
     EXPECT_EQ(primitives[0]->name(), "transit");
     EXPECT_EQ(primitives[1]->name(), "push_mobile");
@@ -97,17 +77,17 @@ TEST_F(Factory, BuildsTheSceneFilePrimitives)
 TEST_F(Factory, UnknownTypeNamesTheLineAndTheKnownTypes)
 {
     const std::string what = error({spec("transit"), spec("pick_and_place")});
-    EXPECT_EQ(what.rfind("unit_scene.xml:17: ", 0), 0u) << what;
-    EXPECT_TRUE(has(what, "pick_and_place")) << what;
-    EXPECT_TRUE(has(what, "push_mobile")) << what;
-    EXPECT_TRUE(has(what, "transit")) << what;
+    EXPECT_TRUE(startsWith(what, "unit_scene.xml:17: ")) << what;
+    EXPECT_TRUE(contains(what, "pick_and_place")) << what;
+    EXPECT_TRUE(contains(what, "push_mobile")) << what;
+    EXPECT_TRUE(contains(what, "transit")) << what;
 }
 
 TEST_F(Factory, MissingStandoffIsNamed)
 {
     const std::string what = error({spec("push_mobile")});
-    EXPECT_EQ(what.rfind("unit_scene.xml:17: ", 0), 0u) << what;
-    EXPECT_TRUE(has(what, "'standoff'")) << what;
+    EXPECT_TRUE(startsWith(what, "unit_scene.xml:17: ")) << what;
+    EXPECT_TRUE(contains(what, "'standoff'")) << what;
 }
 
 TEST_F(Factory, MalformedStandoffIsNamed)
@@ -115,9 +95,9 @@ TEST_F(Factory, MalformedStandoffIsNamed)
     for (const char *value : {"abc", "nan", "inf", "0.4x", "", " "})
     {
         const std::string what = error({spec("push_mobile", {{"standoff", value}})});
-        EXPECT_EQ(what.rfind("unit_scene.xml:17: ", 0), 0u) << value << ": " << what;
-        EXPECT_TRUE(has(what, "'standoff'")) << what;
-        EXPECT_TRUE(has(what, std::string("'") + value + "'")) << what;
+        EXPECT_TRUE(startsWith(what, "unit_scene.xml:17: ")) << value << ": " << what;
+        EXPECT_TRUE(contains(what, "'standoff'")) << what;
+        EXPECT_TRUE(contains(what, std::string("'") + value + "'")) << what;
     }
 }
 
@@ -126,19 +106,19 @@ TEST_F(Factory, NonPositiveStandoffIsReportedAtTheLine)
     for (const char *value : {"0", "-0.2"})
     {
         const std::string what = error({spec("push_mobile", {{"standoff", value}})});
-        EXPECT_EQ(what.rfind("unit_scene.xml:17: ", 0), 0u) << value << ": " << what;
-        EXPECT_TRUE(has(what, "standoff")) << what;
+        EXPECT_TRUE(startsWith(what, "unit_scene.xml:17: ")) << value << ": " << what;
+        EXPECT_TRUE(contains(what, "standoff")) << what;
     }
 }
 
 TEST_F(Factory, UnknownParameterIsNamed)
 {
     std::string what = error({spec("push_mobile", {{"standoff", "0.41"}, {"speed", "2"}})});
-    EXPECT_EQ(what.rfind("unit_scene.xml:17: ", 0), 0u) << what;
-    EXPECT_TRUE(has(what, "'speed'")) << what;
+    EXPECT_TRUE(startsWith(what, "unit_scene.xml:17: ")) << what;
+    EXPECT_TRUE(contains(what, "'speed'")) << what;
     what = error({spec("transit", {{"standoff", "0.41"}})});
-    EXPECT_TRUE(has(what, "'standoff'")) << what;
-    EXPECT_TRUE(has(what, "transit")) << what;
+    EXPECT_TRUE(contains(what, "'standoff'")) << what;
+    EXPECT_TRUE(contains(what, "transit")) << what;
 }
 
 TEST_F(Factory, RegisteredTypesAreBuilt)
@@ -146,22 +126,22 @@ TEST_F(Factory, RegisteredTypesAreBuilt)
     factory_.registerType("wait", [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
                           { return std::make_shared<Wait>(space, params.number("seconds", 1.5)); });
     auto primitives =
-        factory_.build({spec("wait", {{"seconds", "2.5"}}), spec("wait"), spec("transit")}, space_);
+        factory_.build({spec("wait", {{"seconds", "2.5"}}), spec("wait"), spec("transit")}, &space_);
     ASSERT_EQ(primitives.size(), 3u);
     const auto wait = std::dynamic_pointer_cast<Wait>(primitives[0]);
     ASSERT_TRUE(wait);
     EXPECT_DOUBLE_EQ(wait->seconds(), 2.5);
     EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<Wait>(primitives[1])->seconds(), 1.5);  // the fallback
     // the registered type's parameters are checked like the built-in ones
-    EXPECT_TRUE(has(error({spec("wait", {{"seconds", "soon"}})}), "'seconds'"));
-    EXPECT_TRUE(has(error({spec("wait", {{"minutes", "1"}})}), "'minutes'"));
+    EXPECT_TRUE(contains(error({spec("wait", {{"seconds", "soon"}})}), "'seconds'"));
+    EXPECT_TRUE(contains(error({spec("wait", {{"minutes", "1"}})}), "'minutes'"));
     // and it appears among the known types
-    EXPECT_TRUE(has(error({spec("fly")}), "wait"));
+    EXPECT_TRUE(contains(error({spec("fly")}), "wait"));
 
     // registering an existing name replaces its builder
     factory_.registerType("transit", [](const ManipulationStateSpace *space, const PrimitiveParameters &)
                           { return std::make_shared<Wait>(space, 0.0); });
-    primitives = factory_.build({spec("transit")}, space_);
+    primitives = factory_.build({spec("transit")}, &space_);
     EXPECT_TRUE(std::dynamic_pointer_cast<Wait>(primitives[0]));
 }
 

@@ -1,7 +1,7 @@
 // Tests for PushMobile.
-#include "ompl_mm/geometric/ManipulationSetup.h"
 #include "ompl_mm/primitives/PushMobile.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
@@ -9,6 +9,7 @@
 #include <limits>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
 
 namespace
@@ -17,59 +18,31 @@ namespace
     constexpr unsigned int OBJ2 = 1, OBJ4 = 3;
     using V2 = Eigen::Vector2d;
 
-    Scene mobileBlocked()
-    {
-        return loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml");
-    }
-
-    class MobilePush : public ::testing::Test
+    class MobilePush : public MobileBlockedTest
     {
     protected:
-        explicit MobilePush(const Scene &scene = mobileBlocked())
-            : setup_(scene),
-              space_(*setup_.manipulationSpace()),
-              push_(&space_, STANDOFF),
-              trajectory_(&space_)
-        {
-            from_ = space_.cloneState(setup_.getProblemDefinition()->getStartState(0));
-            to_ = space_.cloneState(from_);
-        }
-        ~MobilePush() override
-        {
-            space_.freeState(from_);
-            space_.freeState(to_);
-        }
+        explicit MobilePush(const Scene &scene = mobileBlockedScene()) : MobileBlockedTest(scene) {}
 
-        void robot(ob::State *s, const V2 &q)
-        {
-            space_.robotValues(s)[0] = q.x();
-            space_.robotValues(s)[1] = q.y();
-        }
+        void robot(ob::State *s, const V2 &q) { setRobot(space_, s, q.x(), q.y()); }
         V2 robot(const ob::State *s) const { return V2(space_.robotValues(s)[0], space_.robotValues(s)[1]); }
+        /** Moves object i of s to (p, z), keeping its yaw. */
         void object(ob::State *s, unsigned int i, const V2 &p, double z = 0.0)
         {
-            space_.setObjectPose(s, i, {Eigen::Vector3d(p.x(), p.y(), z), space_.objectYaw(s, i)});
+            setObject(space_, s, i, p.x(), p.y(), z, space_.objectYaw(s, i));
         }
         V2 object(const ob::State *s, unsigned int i) const { return space_.objectPosition(s, i).head<2>(); }
 
-        ManipulationSetup setup_;
-        const ManipulationStateSpace &space_;
-        PushMobile push_;
-        Trajectory trajectory_;
-        ob::State *from_;
-        ob::State *to_;
+        PushMobile push_{&space_, STANDOFF};
+        Trajectory trajectory_{&space_};
+        ob::State *from_ = startCopy();
+        ob::State *to_ = startCopy();
     };
 
     /** MOBILE BLOCKED with a second surface 0.2 high (no obstacle under it) over a free area. */
     Scene withLedge()
     {
-        Scene scene = mobileBlocked();
-        SupportSurface ledge;
-        ledge.name = "ledge";
-        ledge.min = V2(0.5, 1.5);
-        ledge.max = V2(1.5, 2.5);
-        ledge.height = 0.2;
-        scene.surfaces.push_back(ledge);
+        Scene scene = mobileBlockedScene();
+        scene.surfaces.push_back(supportSurface("ledge", V2(0.5, 1.5), V2(1.5, 2.5), 0.2));
         return scene;
     }
 
@@ -215,10 +188,6 @@ TEST_F(MobilePush, ConstructorRejectsNonPositiveStandoff)
 
 TEST(PushMobileRobot, ConstructorRejectsARobotWithoutPlanarBase)
 {
-    Scene scene;
-    scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/unit_arm1.urdf";
-    scene.robot.toolLink = "hand";
-    auto model = std::make_shared<ManipulationModel>(scene, RobotModel::fromUrdfFile(scene.robot.urdfFile));
-    ManipulationStateSpace space(model);
+    ManipulationStateSpace space(makeModel(unitArmScene()));
     EXPECT_THROW(PushMobile(&space, STANDOFF), ompl::Exception);
 }

@@ -1,7 +1,7 @@
 // Tests for Trajectory.
-#include "ompl_mm/geometric/ManipulationSetup.h"
 #include "ompl_mm/primitives/Trajectory.h"
-#include "ompl_mm/scene/SceneLoader.h"
+
+#include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
 
@@ -9,27 +9,21 @@
 #include <utility>
 
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 namespace ob = ompl::base;
 
 namespace
 {
-    class MobileTrajectory : public ::testing::Test
+    class MobileTrajectory : public MobileBlockedTest
     {
     protected:
         MobileTrajectory()
-            : setup_(loadScene(OMPL_MM_SCENES_DIR "/mobile_blocked.xml")), space_(*setup_.manipulationSpace())
         {
-            const ob::State *start = setup_.getProblemDefinition()->getStartState(0);
             for (int i = 0; i < 4; ++i)
             {
-                states_.push_back(space_.cloneState(start));
+                states_.push_back(startCopy());
                 space_.robotValues(states_.back())[0] = 1.9 - 0.5 * i;
             }
-        }
-        ~MobileTrajectory() override
-        {
-            for (ob::State *s : states_)
-                space_.freeState(s);
         }
 
         /** A trajectory through states_[0..n) whose segment i has label {Push, i}. */
@@ -42,8 +36,6 @@ namespace
             return t;
         }
 
-        ManipulationSetup setup_;
-        const ManipulationStateSpace &space_;
         std::vector<ob::State *> states_;
     };
 }  // namespace

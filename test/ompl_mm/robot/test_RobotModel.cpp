@@ -3,18 +3,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "ompl_mm/robot/RobotModel.h"
-#include "ompl_mm/scene/InputError.h"
+
+#include "common/MobileBlocked.h"
 
 namespace ompl_mm
 {
     namespace
     {
+        using test::inputErrorOf;
+
         const std::string ROBOTS_DIR = std::string(OMPL_MM_TEST_DATA_DIR) + "/robots/";
         const double PI = std::acos(-1.0);
         const double TOLERANCE = 1e-12;
@@ -22,20 +24,6 @@ namespace ompl_mm
         RobotModel load(const std::string &file)
         {
             return RobotModel::fromUrdfFile(ROBOTS_DIR + file);
-        }
-
-        /** The message of the InputError f throws, or a marker when it throws none. */
-        std::string inputErrorOf(const std::function<void()> &f)
-        {
-            try
-            {
-                f();
-            }
-            catch (const InputError &e)
-            {
-                return e.what();
-            }
-            return "(no InputError)";
         }
 
         double maxDifference(const Eigen::Isometry3d &a, const Eigen::Isometry3d &b)

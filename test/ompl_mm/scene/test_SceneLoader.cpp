@@ -7,11 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "ompl_mm/scene/InputError.h"
-#include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/scene/XmlReading.h"
 
+#include "common/MobileBlocked.h"
+
 using namespace ompl_mm;
+using namespace ompl_mm::test;
 
 namespace
 {
@@ -57,27 +58,23 @@ namespace
         return parseScene(xml, sourceName, SCENES_DIR);
     }
 
-    /** The message of the InputError thrown by f, or "" when none is thrown. */
-    template <typename F>
-    std::string errorOf(F f)
-    {
-        try
-        {
-            f();
-        }
-        catch (const InputError &e)
-        {
-            return e.what();
-        }
-        return "";
-    }
-
     /** Expects parsing lines to fail at inline.xml:line with a message containing phrase. */
     void expectError(const std::vector<std::string> &lines, int line, const std::string &phrase)
     {
-        const std::string message = errorOf([&] { parseLines(lines); });
-        EXPECT_EQ(message.rfind("inline.xml:" + std::to_string(line) + ": ", 0), 0u) << message;
-        EXPECT_NE(message.find(phrase), std::string::npos) << message;
+        const std::string message = inputErrorOf([&] { parseLines(lines); });
+        EXPECT_TRUE(startsWith(message, "inline.xml:" + std::to_string(line) + ": ")) << message;
+        EXPECT_TRUE(contains(message, phrase)) << message;
+    }
+
+    /** Expects loading DATA_DIR/name to fail with a message starting with the file and `where` and
+        containing phrase; returns the message. */
+    std::string expectLoadError(const std::string &name, const std::string &where, const std::string &phrase)
+    {
+        const std::string file = DATA_DIR + "/" + name;
+        const std::string message = inputErrorOf([&] { loadScene(file); });
+        EXPECT_TRUE(startsWith(message, file + where)) << message;
+        EXPECT_TRUE(contains(message, phrase)) << message;
+        return message;
     }
 
     /** The 1-based number of the first line of the file containing text. */
@@ -221,19 +218,13 @@ TEST(SceneLoader, NumbersParseCompletelyAndFinitely)
 
 TEST(SceneLoader, MissingFileNamesTheFile)
 {
-    const std::string file = DATA_DIR + "/no_such_scene.xml";
-    const std::string message = errorOf([&] { loadScene(file); });
-    EXPECT_EQ(message.rfind(file + ": ", 0), 0u) << message;
-    EXPECT_NE(message.find("scene file not found"), std::string::npos) << message;
+    expectLoadError("no_such_scene.xml", ": ", "scene file not found");
 }
 
 TEST(SceneLoader, MalformedXmlNamesFileAndLine)
 {
-    const std::string file = DATA_DIR + "/malformed.xml";
-    const std::string message = errorOf([&] { loadScene(file); });
-    EXPECT_EQ(message.rfind(file + ":5: ", 0), 0u) << message;
-    EXPECT_NE(message.find("XML syntax error"), std::string::npos) << message;
-    EXPECT_NE(message.find("<box>"), std::string::npos) << message;
+    const std::string message = expectLoadError("malformed.xml", ":5: ", "XML syntax error");
+    EXPECT_TRUE(contains(message, "<box>")) << message;
 }
 
 TEST(SceneLoader, WrongRootElement)
@@ -309,10 +300,7 @@ TEST(SceneLoader, GoalForUnknownObject)
 
 TEST(SceneLoader, MissingUrdfNamesTheRobotLine)
 {
-    const std::string file = DATA_DIR + "/missing_urdf.xml";
-    const std::string message = errorOf([&] { loadScene(file); });
-    EXPECT_EQ(message.rfind(file + ":4: ", 0), 0u) << message;
-    EXPECT_NE(message.find("URDF file 'robots/no_such_robot.urdf' not found"), std::string::npos) << message;
+    expectLoadError("missing_urdf.xml", ":4: ", "URDF file 'robots/no_such_robot.urdf' not found");
 }
 
 TEST(SceneLoader, SurfaceMinNotBelowMax)
