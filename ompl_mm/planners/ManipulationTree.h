@@ -1,7 +1,8 @@
 /* One search tree of MOPL: vertices with their parent, the label of the edge to the parent and
    the cached metric quantities. Nearest-neighbour search is exact for the directed manipulation
    metric, which no metric tree can index: vertices are grouped by object configuration (a vertex
-   reached by a transit joins its parent's group), a group is skipped whole when a lower bound of
+   reached by a transit joins its parent's group) and within a group into blocks of 8; a group or
+   block is skipped whole when a lower bound of
    its distance (its objects' cost, the robot's distance to the group's bounding boxes of joints
    and tool points, and the tool's shortest approach and return) reaches the best distance so
    far, and the rest are scanned with early termination. */
@@ -59,13 +60,11 @@ namespace ompl_mm
         const ManipulationStateSpace *space_;
         const ManipulationMetric *metric_;
         bool forward_;
-        /** Boxes around the joints and tool points of some vertices. */
-        struct Bounds
-        {
-            Eigen::AlignedBox<double, Eigen::Dynamic> joints;
-            Eigen::AlignedBox3d tools;
-            void extend(const MetricPoint &point);
-        };
+        /** Boxes around the joints and tool points of some vertices: an offset into boxes_, where
+            joint lows, joint highs, tool lows (3) and tool highs (3) follow each other. */
+        using Bounds = std::size_t;
+        Bounds newBounds();
+        void extendBounds(Bounds bounds, const MetricPoint &point);
 
         /** Consecutive members of a group (often neighbours along one extension) with their bounds. */
         struct Block
@@ -88,15 +87,16 @@ namespace ompl_mm
 
         /** Lower bound of the distance from vertices of group g within bounds to the query; the
             tool's legs are bounded only when the rest stays below cutoff. */
-        double lowerBound(std::size_t g, const Bounds &bounds, const ManipulationMetric::Query &query,
-                          Eigen::Map<const Eigen::VectorXd> queryJoints, double cutoff) const;
+        double lowerBound(std::size_t g, Bounds bounds, const ManipulationMetric::Query &query,
+                          double cutoff) const;
         /** Scans the blocks of group g whose bounds may beat *bestDistance. */
-        void scanGroup(std::size_t g, const ManipulationMetric::Query &query,
-                       Eigen::Map<const Eigen::VectorXd> queryJoints, int *best, double *bestDistance) const;
+        void scanGroup(std::size_t g, const ManipulationMetric::Query &query, int *best,
+                       double *bestDistance) const;
 
         std::vector<Vertex> vertices_;
         std::vector<double> packedRobots_;  ///< ManipulationMetric::packRobot of each vertex, in order
         std::vector<Group> groups_;
+        std::vector<double> boxes_;  ///< storage of all Bounds
         mutable std::vector<ManipulationMetric::ObjectCost> groupCosts_;
         mutable std::vector<double> groupBounds_;
         mutable ManipulationMetric::LegPlan legPlan_;  ///< of the group being scanned

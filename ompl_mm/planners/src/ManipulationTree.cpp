@@ -25,17 +25,16 @@ namespace ompl_mm
         bool objectsMove = parent < 0;
         for (unsigned int i = 0; i < space_->objectCount() && !objectsMove; ++i)
             objectsMove = space_->objectMoves(state, vertices_[parent].state, i);
-        const Bounds empty{Eigen::AlignedBox<double, Eigen::Dynamic>(space_->robotDimension()), {}};
         if (objectsMove)
-            groups_.push_back({index, {}, empty, {}});
+            groups_.push_back({index, {}, newBounds(), {}});
         else
             vertex.group = vertices_[parent].group;
         Group &group = groups_[vertex.group];
         if (group.blocks.empty() || group.blocks.back().end - group.blocks.back().begin == BLOCK_SIZE)
-            group.blocks.push_back({group.members.size(), group.members.size(), empty});
+            group.blocks.push_back({group.members.size(), group.members.size(), newBounds()});
         group.members.push_back(index);
-        group.bounds.extend(vertex.point);
-        group.blocks.back().bounds.extend(vertex.point);
+        extendBounds(group.bounds, vertex.point);
+        extendBounds(group.blocks.back().bounds, vertex.point);
         ++group.blocks.back().end;
         packedRobots_.resize((index + 1) * metric_->packedRobotSize());
         metric_->packRobot(vertex.point, packedRobots_.data() + index * metric_->packedRobotSize());
@@ -65,30 +64,75 @@ namespace ompl_mm
     {
         while (!vertices_.empty())
             removeLast();
+        boxes_.clear();
     }
 
-    void ManipulationTree::Bounds::extend(const MetricPoint &point)
+    ManipulationTree::Bounds ManipulationTree::newBounds()
     {
-        joints.extend(Eigen::Map<const Eigen::VectorXd>(point.joints.data(), point.joints.size()));
-        tools.extend(point.tool);
+        const std::size_t dof = space_->robotDimension();
+        const Bounds bounds = boxes_.size();
+        const double inf = std::numeric_limits<double>::infinity();
+        // empty boxes: lows at +inf, highs at -inf
+        for (std::size_t k = 0; k < dof; ++k)
+            boxes_.push_back(inf);
+        for (std::size_t k = 0; k < dof; ++k)
+            boxes_.push_back(-inf);
+        boxes_.insert(boxes_.end(), {inf, inf, inf, -inf, -inf, -inf});
+        return bounds;
     }
 
-    double ManipulationTree::lowerBound(std::size_t g, const Bounds &bounds,
-                                        const ManipulationMetric::Query &query,
-                                        Eigen::Map<const Eigen::VectorXd> queryJoints, double cutoff) const
+    void ManipulationTree::extendBounds(Bounds bounds, const MetricPoint &point)
+    {
+        const std::size_t dof = point.joints.size();
+        double *box = boxes_.data() + bounds;
+        for (std::size_t k = 0; k < dof; ++k)
+        {
+            box[k] = std::min(box[k], point.joints[k]);
+            box[dof + k] = std::max(box[dof + k], point.joints[k]);
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+            box[2 * dof + k] = std::min(box[2 * dof + k], point.tool[k]);
+            box[2 * dof + 3 + k] = std::max(box[2 * dof + 3 + k], point.tool[k]);
+        }
+    }
+
+    namespace
+    {
+        /** Squared distance from x to the box [low, high] in n dimensions (0 inside). */
+        double squaredBoxDistance(const double *low, const double *high, const double *x, std::size_t n)
+        {
+            double sum = 0.0;
+            for (std::size_t k = 0; k < n; ++k)
+            {
+                const double below = low[k] - x[k];
+                const double above = x[k] - high[k];
+                const double out = std::max({below, above, 0.0});
+                sum += out * out;
+            }
+            return sum;
+        }
+    }  // namespace
+
+    double ManipulationTree::lowerBound(std::size_t g, Bounds bounds, const ManipulationMetric::Query &query,
+                                        double cutoff) const
     {
         // the cheap parts first: often they already reach the cutoff
-        const double joints = std::sqrt(bounds.joints.squaredExteriorDistance(queryJoints));
-        const double tool = std::sqrt(bounds.tools.squaredExteriorDistance(query.point.tool));
+        const std::size_t dof = query.point.joints.size();
+        const double *box = boxes_.data() + bounds;
+        const double joints = std::sqrt(squaredBoxDistance(box, box + dof, query.point.joints.data(), dof));
+        const double tool =
+            std::sqrt(squaredBoxDistance(box + 2 * dof, box + 2 * dof + 3, query.point.tool.data(), 3));
         const double bound = groupCosts_[g].bound + metric_->robotLowerBound(query, joints, tool);
         if (bound >= cutoff)
             return bound;
+        const Eigen::AlignedBox3d toolBox(Eigen::Map<const Eigen::Vector3d>(box + 2 * dof),
+                                          Eigen::Map<const Eigen::Vector3d>(box + 2 * dof + 3));
         return bound +
-               metric_->legLowerBound(vertices_[groups_[g].first].point, query, groupCosts_[g], bounds.tools);
+               metric_->legLowerBound(vertices_[groups_[g].first].point, query, groupCosts_[g], toolBox);
     }
 
-    void ManipulationTree::scanGroup(std::size_t g, const ManipulationMetric::Query &query,
-                                     Eigen::Map<const Eigen::VectorXd> queryJoints, int *best,
+    void ManipulationTree::scanGroup(std::size_t g, const ManipulationMetric::Query &query, int *best,
                                      double *bestDistance) const
     {
         const Group &group = groups_[g];
@@ -97,8 +141,8 @@ namespace ompl_mm
         legPlan_.ready = false;
         for (const Block &block : group.blocks)
         {
-            if (group.blocks.size() > 1 &&
-                lowerBound(g, block.bounds, query, queryJoints, *bestDistance) >= *bestDistance)
+            // a single block's bound is the group's, already checked
+            if (group.blocks.size() > 1 && lowerBound(g, block.bounds, query, *bestDistance) >= *bestDistance)
                 continue;
             for (std::size_t m = block.begin; m < block.end; ++m)
             {
@@ -120,24 +164,22 @@ namespace ompl_mm
         int best = -1;
         double bestDistance = cutoff;
         // the most promising group first, so that its distance prunes the others
-        const Eigen::Map<const Eigen::VectorXd> queryJoints(query.point.joints.data(),
-                                                            query.point.joints.size());
         groupCosts_.resize(groups_.size());
         groupBounds_.resize(groups_.size());
         std::size_t first = 0;
         for (std::size_t g = 0; g < groups_.size(); ++g)
         {
             groupCosts_[g] = metric_->objectCost(vertices_[groups_[g].first].point, query);
-            groupBounds_[g] = lowerBound(g, groups_[g].bounds, query, queryJoints, 0.0);
+            groupBounds_[g] = lowerBound(g, groups_[g].bounds, query, 0.0);
             if (groupBounds_[g] < groupBounds_[first])
                 first = g;
         }
         if (!groups_.empty())
-            scanGroup(first, query, queryJoints, &best, &bestDistance);
+            scanGroup(first, query, &best, &bestDistance);
         for (std::size_t g = 0; g < groups_.size(); ++g)
             if (g != first && groupBounds_[g] < bestDistance &&
-                lowerBound(g, groups_[g].bounds, query, queryJoints, bestDistance) < bestDistance)
-                scanGroup(g, query, queryJoints, &best, &bestDistance);
+                lowerBound(g, groups_[g].bounds, query, bestDistance) < bestDistance)
+                scanGroup(g, query, &best, &bestDistance);
         if (distance)
             *distance = bestDistance;
         return best;
