@@ -13,6 +13,7 @@
 #include <boost/program_options.hpp>
 
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 
 namespace po = boost::program_options;
@@ -85,20 +86,22 @@ namespace
         const bool solved = setup.getProblemDefinition()->hasExactSolution();
         const double time = setup.getLastPlanComputationTime();
         const ompl_mm::MOPLStatistics &stats = setup.mopl()->statistics();
-        std::cout << "scene " << scene.name << ": " << (solved ? "solved" : "not solved") << " in " << time
-                  << " s (planner " << options.planner << ", seed " << options.seed << ")\n";
+        std::cout << std::fixed << std::setprecision(3) << "scene " << scene.name << ": "
+                  << (solved ? "solved" : "not solved") << " in " << time << " s (planner " << options.planner
+                  << ", seed " << options.seed << ")\n";
         if (solved)
         {
             const ompl_mm::ManipulationPath &path = setup.manipulationPath();
-            std::cout << "  path: " << path.getStateCount() << " waypoints, tool path "
-                      << path.toolPathLength() << " m;";
+            std::cout << std::setprecision(2) << "  path: " << path.getStateCount()
+                      << " waypoints, tool path " << path.toolPathLength() << " m;";
             for (const auto &[kind, count] : path.primitiveCounts())
                 if (count > 0)
                     std::cout << ' ' << count << ' ' << kind;
             std::cout << '\n';
         }
         const double share = time > 0.0 ? 100.0 / time : 0.0;
-        std::cout << "  search: " << stats.iterations << " iterations, " << stats.collisionQueries
+        std::cout << std::setprecision(1) << "  search: " << stats.iterations << " iterations, "
+                  << stats.restarts << " restarts, " << stats.collisionQueries
                   << " collision queries; time in nearest neighbour " << stats.nearestTime * share
                   << " %, propagate " << stats.propagateTime * share << " %, connect "
                   << stats.connectTime * share << " %\n";

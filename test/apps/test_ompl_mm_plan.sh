@@ -276,6 +276,8 @@ edit "$f" '<object name="obj3" xyz="-0.9 -0.9 *"' '<object name="obj3" xyz="3 3 
 expect_bad "goal on no support surface" "$f" "$(line_of "$f" 'xyz="3 3 *"')" "obj3"
 
 expect_bad_option "--seed 0" "--seed" "$scene" --seed 0
+expect_bad_option "--seed -1" "--seed" "$scene" --seed -1
+expect_bad_option "--seed 2^32" "--seed" "$scene" --seed 4294967296
 expect_bad_option "--time-limit -1" "--time-limit" "$scene" --time-limit -1
 expect_bad_option "--planner foo" "foo" "$scene" --planner foo
 expect_bad_option "unwritable --json path" "/nonexistent/dir/x.json" "$scene" --time-limit 1 --json /nonexistent/dir/x.json
