@@ -64,8 +64,8 @@ namespace ompl_mm
         void setSmoothingAttempts(unsigned int attempts) { smoothingAttempts_ = attempts; }
         unsigned int getSmoothingAttempts() const { return smoothingAttempts_; }
 
+        /** The metric's weights (also declared parameters). */
         ManipulationMetric::Weights &metricWeights() { return metric_->weights(); }
-        ModalSampler::Probabilities &samplingProbabilities() { return probabilities_; }
 
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         void clear() override;
