@@ -6,6 +6,23 @@
 
 namespace ompl_mm
 {
+    namespace
+    {
+        /** Squared distance from x to the box [low, high] in n dimensions (0 inside). */
+        double squaredBoxDistance(const double *low, const double *high, const double *x, std::size_t n)
+        {
+            double sum = 0.0;
+            for (std::size_t k = 0; k < n; ++k)
+            {
+                const double below = low[k] - x[k];
+                const double above = x[k] - high[k];
+                const double out = std::max({below, above, 0.0});
+                sum += out * out;
+            }
+            return sum;
+        }
+    }  // namespace
+
     ManipulationTree::ManipulationTree(const ManipulationStateSpace *space, const ManipulationMetric *metric,
                                        bool forward)
         : space_(space), metric_(metric), forward_(forward)
@@ -96,23 +113,6 @@ namespace ompl_mm
             box[2 * dof + 3 + k] = std::max(box[2 * dof + 3 + k], point.tool[k]);
         }
     }
-
-    namespace
-    {
-        /** Squared distance from x to the box [low, high] in n dimensions (0 inside). */
-        double squaredBoxDistance(const double *low, const double *high, const double *x, std::size_t n)
-        {
-            double sum = 0.0;
-            for (std::size_t k = 0; k < n; ++k)
-            {
-                const double below = low[k] - x[k];
-                const double above = x[k] - high[k];
-                const double out = std::max({below, above, 0.0});
-                sum += out * out;
-            }
-            return sum;
-        }
-    }  // namespace
 
     double ManipulationTree::lowerBound(std::size_t g, Bounds bounds, const ManipulationMetric::Query &query,
                                         double cutoff) const
