@@ -81,6 +81,9 @@ namespace ompl_mm
         /** A lower bound of the robot term for robots whose joints lie at least jointDistance and
             whose tool lies at least toolDistance from the query's (0 when its robot is undefined). */
         double robotLowerBound(const Query &query, double jointDistance, double toolDistance) const;
+        /** False when robotLowerBound() ignores the tool distance (mobile bases), so callers may
+            skip computing it. */
+        bool boundUsesToolDistance() const { return !mobile_; }
 
         /** A lower bound of the tool's legs (first approach and final return) for vertices with
             these objects whose tool points lie in toolBox. */

@@ -85,10 +85,15 @@ namespace ompl_mm
         /** Members per block. */
         static constexpr std::size_t BLOCK_SIZE = 8;
 
-        /** Lower bound of the distance from vertices of group g within bounds to the query; the
-            tool's legs are bounded only when the rest stays below cutoff. */
-        double lowerBound(std::size_t g, Bounds bounds, const ManipulationMetric::Query &query,
-                          double cutoff) const;
+        /** Lower bound of the distance from vertices of group g within bounds to the query: the
+            objects' cost and the robot's distance to the boxes. */
+        double objectAndRobotBound(std::size_t g, Bounds bounds,
+                                   const ManipulationMetric::Query &query) const;
+        /** Lower bound of the tool's first approach and last return for those vertices. */
+        double legBound(std::size_t g, Bounds bounds, const ManipulationMetric::Query &query) const;
+        /** True unless the bounds show that no vertex of group g within bounds is nearer than best. */
+        bool mayBeat(std::size_t g, Bounds bounds, double objectAndRobot,
+                     const ManipulationMetric::Query &query, double best) const;
         /** Scans the blocks of group g whose bounds may beat *bestDistance. */
         void scanGroup(std::size_t g, const ManipulationMetric::Query &query, int *best,
                        double *bestDistance) const;

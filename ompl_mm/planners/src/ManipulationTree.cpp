@@ -114,22 +114,35 @@ namespace ompl_mm
         }
     }
 
-    double ManipulationTree::lowerBound(std::size_t g, Bounds bounds, const ManipulationMetric::Query &query,
-                                        double cutoff) const
+    double ManipulationTree::objectAndRobotBound(std::size_t g, Bounds bounds,
+                                                 const ManipulationMetric::Query &query) const
     {
-        // the cheap parts first: often they already reach the cutoff
+        if (!query.robotDefined)
+            return groupCosts_[g].bound;
         const std::size_t dof = query.point.joints.size();
         const double *box = boxes_.data() + bounds;
         const double joints = std::sqrt(squaredBoxDistance(box, box + dof, query.point.joints.data(), dof));
         const double tool =
-            std::sqrt(squaredBoxDistance(box + 2 * dof, box + 2 * dof + 3, query.point.tool.data(), 3));
-        const double bound = groupCosts_[g].bound + metric_->robotLowerBound(query, joints, tool);
-        if (bound >= cutoff)
-            return bound;
-        const Eigen::AlignedBox3d toolBox(Eigen::Map<const Eigen::Vector3d>(box + 2 * dof),
-                                          Eigen::Map<const Eigen::Vector3d>(box + 2 * dof + 3));
-        return bound +
-               metric_->legLowerBound(vertices_[groups_[g].first].point, query, groupCosts_[g], toolBox);
+            metric_->boundUsesToolDistance()
+                ? std::sqrt(squaredBoxDistance(box + 2 * dof, box + 2 * dof + 3, query.point.tool.data(), 3))
+                : 0.0;
+        return groupCosts_[g].bound + metric_->robotLowerBound(query, joints, tool);
+    }
+
+    double ManipulationTree::legBound(std::size_t g, Bounds bounds,
+                                      const ManipulationMetric::Query &query) const
+    {
+        const double *tools = boxes_.data() + bounds + 2 * query.point.joints.size();
+        const Eigen::AlignedBox3d toolBox(Eigen::Map<const Eigen::Vector3d>(tools),
+                                          Eigen::Map<const Eigen::Vector3d>(tools + 3));
+        return metric_->legLowerBound(vertices_[groups_[g].first].point, query, groupCosts_[g], toolBox);
+    }
+
+    bool ManipulationTree::mayBeat(std::size_t g, Bounds bounds, double objectAndRobot,
+                                   const ManipulationMetric::Query &query, double best) const
+    {
+        // the cheap part first: often it already reaches the best distance
+        return objectAndRobot < best && objectAndRobot + legBound(g, bounds, query) < best;
     }
 
     void ManipulationTree::scanGroup(std::size_t g, const ManipulationMetric::Query &query, int *best,
@@ -142,7 +155,8 @@ namespace ompl_mm
         for (const Block &block : group.blocks)
         {
             // a single block's bound is the group's, already checked
-            if (group.blocks.size() > 1 && lowerBound(g, block.bounds, query, *bestDistance) >= *bestDistance)
+            if (group.blocks.size() > 1 &&
+                !mayBeat(g, block.bounds, objectAndRobotBound(g, block.bounds, query), query, *bestDistance))
                 continue;
             for (std::size_t m = block.begin; m < block.end; ++m)
             {
@@ -170,15 +184,14 @@ namespace ompl_mm
         for (std::size_t g = 0; g < groups_.size(); ++g)
         {
             groupCosts_[g] = metric_->objectCost(vertices_[groups_[g].first].point, query);
-            groupBounds_[g] = lowerBound(g, groups_[g].bounds, query, 0.0);
+            groupBounds_[g] = objectAndRobotBound(g, groups_[g].bounds, query);
             if (groupBounds_[g] < groupBounds_[first])
                 first = g;
         }
         if (!groups_.empty())
             scanGroup(first, query, &best, &bestDistance);
         for (std::size_t g = 0; g < groups_.size(); ++g)
-            if (g != first && groupBounds_[g] < bestDistance &&
-                lowerBound(g, groups_[g].bounds, query, bestDistance) < bestDistance)
+            if (g != first && mayBeat(g, groups_[g].bounds, groupBounds_[g], query, bestDistance))
                 scanGroup(g, query, &best, &bestDistance);
         if (distance)
             *distance = bestDistance;
