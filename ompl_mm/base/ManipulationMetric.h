@@ -119,7 +119,12 @@ namespace ompl_mm
 
     private:
         /** Cost of the tool's approach to the first object, `distance` away. */
-        double approachCost(double distance) const;
+        double approachCost(double distance) const
+        {
+            return distance > weights_.contactDistance
+                       ? weights_.moveToObjectPenalty + weights_.moveToObjectFactor * distance
+                       : 0.0;
+        }
         /** The robot's own distance between a packed robot part and a point (symmetric). */
         double robotTerm(const double *packedRobot, const MetricPoint &point) const;
         /** Adds to `cost` the tool's legs from startTool to each moving object (nearest first) and

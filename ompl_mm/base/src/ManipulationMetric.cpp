@@ -134,13 +134,6 @@ namespace ompl_mm
         return cost < cutoff ? cost : std::numeric_limits<double>::infinity();
     }
 
-    double ManipulationMetric::approachCost(double distance) const
-    {
-        return distance > weights_.contactDistance
-                   ? weights_.moveToObjectPenalty + weights_.moveToObjectFactor * distance
-                   : 0.0;
-    }
-
     double ManipulationMetric::legLowerBound(const MetricPoint &objects, const Query &query,
                                              const ObjectCost &objectCost,
                                              const Eigen::AlignedBox3d &toolBox) const
