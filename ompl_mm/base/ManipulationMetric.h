@@ -118,6 +118,10 @@ namespace ompl_mm
                         const ObjectCost &objectCost, double cutoff, LegPlan &plan) const;
 
     private:
+        /** Objects that move between a and b (only those `defined` marks, when given) and the
+            penalties and displacements that costs. */
+        ObjectCost objectCost(const MetricPoint &a, const MetricPoint &b,
+                              const std::vector<char> *defined) const;
         /** Cost of the tool's approach to the first object, `distance` away. */
         double approachCost(double distance) const
         {

@@ -43,6 +43,8 @@ namespace ompl_mm
 
         /** True when the object's pose differs between a and b (beyond 1e-9). */
         bool objectMoves(const ompl::base::State *a, const ompl::base::State *b, unsigned int object) const;
+        /** True when some object's pose differs between a and b. */
+        bool anyObjectMoves(const ompl::base::State *a, const ompl::base::State *b) const;
         /** True when the robot's joints differ between a and b (beyond 1e-9). */
         bool robotMoves(const ompl::base::State *a, const ompl::base::State *b) const;
 

@@ -33,8 +33,6 @@ namespace ompl_mm
     protected:
         /** True when every object rests on a support surface in state. */
         bool allObjectsRest(const ompl::base::State *state) const;
-        /** True when some object's pose differs between a and b. */
-        bool anyObjectMoves(const ompl::base::State *a, const ompl::base::State *b) const;
 
         const ManipulationStateSpace *space_;
 

@@ -17,6 +17,26 @@ namespace ompl_mm
             return (a.objects[i] - b.objects[i]).cwiseAbs().maxCoeff() > SAME ||
                    std::abs(a.yaws[i] - b.yaws[i]) > SAME;
         }
+
+        /** The object of the set `objects` (bits) whose position is nearest to point; its squared
+            distance in *squared. @pre objects != 0. */
+        int nearestObject(std::uint64_t objects, const std::vector<Eigen::Vector3d> &positions,
+                          const Eigen::Vector3d &point, double *squared)
+        {
+            int nearest = __builtin_ctzll(objects);
+            *squared = (positions[nearest] - point).squaredNorm();
+            for (std::uint64_t rest = objects & (objects - 1); rest != 0; rest &= rest - 1)
+            {
+                const int i = __builtin_ctzll(rest);
+                const double d = (positions[i] - point).squaredNorm();
+                if (d < *squared)
+                {
+                    *squared = d;
+                    nearest = i;
+                }
+            }
+            return nearest;
+        }
     }  // namespace
 
     ManipulationMetric::ManipulationMetric(const ManipulationStateSpace *space)
@@ -78,18 +98,8 @@ namespace ompl_mm
             double legs = 0.0;
             while (pending != 0)
             {
-                int next = 0;
-                double nearest = std::numeric_limits<double>::infinity();
-                for (std::uint64_t rest = pending; rest != 0; rest &= rest - 1)
-                {
-                    const int i = __builtin_ctzll(rest);
-                    const double d = (from.objects[i] - tool).squaredNorm();
-                    if (d < nearest)
-                    {
-                        nearest = d;
-                        next = i;
-                    }
-                }
+                double nearest = 0.0;
+                const int next = nearestObject(pending, from.objects, tool, &nearest);
                 pending &= ~(std::uint64_t{1} << next);
                 legs += approachCost(std::sqrt(nearest));
                 tool = to.objects[next];
@@ -108,18 +118,8 @@ namespace ompl_mm
         if (moving == 0)
             return cost;
         // the first object is the moving one nearest to the start; the rest of the visit is planned
-        int first = __builtin_ctzll(moving);
-        double nearest = (from.objects[first] - startTool).squaredNorm();
-        for (std::uint64_t rest = moving & (moving - 1); rest != 0; rest &= rest - 1)
-        {
-            const int i = __builtin_ctzll(rest);
-            const double d = (from.objects[i] - startTool).squaredNorm();
-            if (d < nearest)
-            {
-                nearest = d;
-                first = i;
-            }
-        }
+        double nearest = 0.0;
+        const int first = nearestObject(moving, from.objects, startTool, &nearest);
         cost += approachCost(std::sqrt(nearest));
         if (cost >= cutoff)
             return std::numeric_limits<double>::infinity();
@@ -159,18 +159,23 @@ namespace ompl_mm
         return approachCost(std::sqrt(first)) + std::sqrt(last);
     }
 
+    ManipulationMetric::ObjectCost ManipulationMetric::objectCost(const MetricPoint &a, const MetricPoint &b,
+                                                                  const std::vector<char> *defined) const
+    {
+        ObjectCost cost;
+        for (std::size_t i = 0; i < a.objects.size(); ++i)
+            if ((!defined || (*defined)[i]) && moves(a, b, i))
+            {
+                cost.moving |= std::uint64_t{1} << i;
+                cost.bound += weights_.movingObjectPenalty + (a.objects[i] - b.objects[i]).norm();
+            }
+        return cost;
+    }
+
     ManipulationMetric::ObjectCost ManipulationMetric::objectCost(const MetricPoint &objects,
                                                                   const Query &query) const
     {
-        ObjectCost cost;
-        for (std::size_t i = 0; i < objects.objects.size(); ++i)
-            if (query.objectDefined[i] && moves(objects, query.point, i))
-            {
-                cost.moving |= std::uint64_t{1} << i;
-                cost.bound +=
-                    weights_.movingObjectPenalty + (objects.objects[i] - query.point.objects[i]).norm();
-            }
-        return cost;
+        return objectCost(objects, query.point, &query.objectDefined);
     }
 
     double ManipulationMetric::robotLowerBound(const Query &query, double jointDistance,
@@ -185,13 +190,7 @@ namespace ompl_mm
     {
         std::vector<double> packed(packedRobotSize());
         packRobot(from, packed.data());
-        ObjectCost objects;
-        for (std::size_t i = 0; i < from.objects.size(); ++i)
-            if (moves(from, to, i))
-            {
-                objects.moving |= std::uint64_t{1} << i;
-                objects.bound += weights_.movingObjectPenalty + (to.objects[i] - from.objects[i]).norm();
-            }
+        const ObjectCost objects = objectCost(from, to, nullptr);
         LegPlan plan;
         return addToolLegs(from, to, objects.moving, from.tool, to.tool,
                            robotTerm(packed.data(), to) + objects.bound,

@@ -135,6 +135,14 @@ namespace ompl_mm
                std::abs(objectYaw(a, object) - objectYaw(b, object)) > SAME;
     }
 
+    bool ManipulationStateSpace::anyObjectMoves(const ob::State *a, const ob::State *b) const
+    {
+        for (unsigned int i = 0; i < objectCount(); ++i)
+            if (objectMoves(a, b, i))
+                return true;
+        return false;
+    }
+
     bool ManipulationStateSpace::robotMoves(const ob::State *a, const ob::State *b) const
     {
         const double *qa = robotValues(a);

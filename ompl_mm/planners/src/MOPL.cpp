@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace ob = ompl::base;
 
@@ -192,23 +193,18 @@ namespace ompl_mm
             metric_->makePoint(root, rootPoint);
             rootDistance = metric_->distance(rootPoint, query_, metric_->objectCost(rootPoint, query_));
         }
+        // an invalid root cannot compete: then the tree alone answers
+        const bool rootValid = si_->isValid(root);
         int index = -1;
         {
             ScopedTimer timer(statistics_.nearestTime);
-            index = tree.nearest(query_, nullptr, rootDistance);
+            index = tree.nearest(query_, nullptr,
+                                 rootValid ? rootDistance : std::numeric_limits<double>::infinity());
         }
-        if (index < 0)
+        if (index < 0 && rootValid)
         {
-            if (si_->isValid(root))
-            {
-                index = tree.add(root, -1, {});
-                *newRoot = true;
-            }
-            else
-            {
-                ScopedTimer timer(statistics_.nearestTime);
-                index = tree.nearest(query_, nullptr);
-            }
+            index = tree.add(root, -1, {});
+            *newRoot = true;
         }
         space_->freeState(root);
         return index;

@@ -39,10 +39,7 @@ namespace ompl_mm
         const int index = static_cast<int>(vertices_.size());
         Vertex vertex{space_->cloneState(state), parent, label, {}, groups_.size()};
         metric_->makePoint(vertex.state, vertex.point);
-        bool objectsMove = parent < 0;
-        for (unsigned int i = 0; i < space_->objectCount() && !objectsMove; ++i)
-            objectsMove = space_->objectMoves(state, vertices_[parent].state, i);
-        if (objectsMove)
+        if (parent < 0 || space_->anyObjectMoves(state, vertices_[parent].state))
             groups_.push_back({index, {}, newBounds(), {}});
         else
             vertex.group = vertices_[parent].group;
@@ -188,7 +185,8 @@ namespace ompl_mm
             if (groupBounds_[g] < groupBounds_[first])
                 first = g;
         }
-        if (!groups_.empty())
+        if (!groups_.empty() &&
+            mayBeat(first, groups_[first].bounds, groupBounds_[first], query, bestDistance))
             scanGroup(first, query, &best, &bestDistance);
         for (std::size_t g = 0; g < groups_.size(); ++g)
             if (g != first && mayBeat(g, groups_[g].bounds, groupBounds_[g], query, bestDistance))

@@ -14,12 +14,4 @@ namespace ompl_mm
                 return false;
         return true;
     }
-
-    bool Primitive::anyObjectMoves(const ompl::base::State *a, const ompl::base::State *b) const
-    {
-        for (unsigned int i = 0; i < space_->objectCount(); ++i)
-            if (space_->objectMoves(a, b, i))
-                return true;
-        return false;
-    }
 }  // namespace ompl_mm

@@ -9,7 +9,7 @@ namespace ompl_mm
 
     bool Transit::isUseful(const ompl::base::State *from, const ompl::base::State *to) const
     {
-        return space_->robotMoves(from, to) && !anyObjectMoves(from, to) && allObjectsRest(from);
+        return space_->robotMoves(from, to) && !space_->anyObjectMoves(from, to) && allObjectsRest(from);
     }
 
     bool Transit::propagate(const ompl::base::State *from, const ompl::base::State *to,
