@@ -1,10 +1,10 @@
 // ompl_mm_plan: plans a manipulation scene with MOPL and reports the result.
 // Exit codes: 0 solved, 1 not solved, 2 bad input.
+#include "common/AppSupport.h"
 #include "ompl_mm/geometric/ManipulationSetup.h"
 #include "ompl_mm/io/PathFile.h"
 #include "ompl_mm/io/ResultJson.h"
 #include "ompl_mm/io/SceneSvg.h"
-#include "ompl_mm/scene/InputError.h"
 #include "ompl_mm/scene/SceneLoader.h"
 
 #include <ompl/util/Console.h>
@@ -64,20 +64,8 @@ namespace
         }
         if (options.planner != "mopl")
             throw ompl_mm::InputError("unknown planner '" + options.planner + "' (known: mopl)");
-        if (options.seed < 1 || options.seed > 4294967295LL)
-            throw ompl_mm::InputError("--seed must be in [1, 4294967295], got " +
-                                      std::to_string(options.seed));
-        if (vm.count("time-limit") && !(options.timeLimit > 0.0))
-            throw ompl_mm::InputError("--time-limit must be positive");
+        ompl_mm::apps::checkSeedAndTimeLimit(options.seed, vm.count("time-limit") > 0, options.timeLimit);
         return true;
-    }
-
-    std::ofstream openOutput(const std::string &path)
-    {
-        std::ofstream out(path);
-        if (!out)
-            throw ompl_mm::InputError(path + ": cannot write file");
-        return out;
     }
 
     void printSummary(const ompl_mm::Scene &scene, const ompl_mm::ManipulationSetup &setup,
@@ -114,13 +102,9 @@ namespace
         ompl_mm::ManipulationSetup setup(scene);
         setup.mopl()->setSeed(static_cast<std::uint_fast32_t>(options.seed));
         // open the outputs first: a bad path should not cost a whole planning run
-        std::ofstream json, svg, path;
-        if (!options.json.empty())
-            json = openOutput(options.json);
-        if (!options.svg.empty())
-            svg = openOutput(options.svg);
-        if (!options.path.empty())
-            path = openOutput(options.path);
+        std::ofstream json = ompl_mm::apps::openOutput(options.json);
+        std::ofstream svg = ompl_mm::apps::openOutput(options.svg);
+        std::ofstream path = ompl_mm::apps::openOutput(options.path);
 
         const double timeLimit = options.timeLimit > 0.0 ? options.timeLimit : scene.timeLimit;
         setup.solve(timeLimit);
@@ -143,23 +127,15 @@ namespace
 
 int main(int argc, char **argv)
 {
-    Options options;
-    try
-    {
-        int exitCode = 0;
-        if (!parseOptions(argc, argv, options, exitCode))
-            return exitCode;
-        ompl::msg::setLogLevel(options.verbose ? ompl::msg::LOG_INFO : ompl::msg::LOG_WARN);
-        return run(options);
-    }
-    catch (const po::error &e)
-    {
-        std::cerr << "ompl_mm_plan: " << e.what() << " (see --help)\n";
-        return 2;
-    }
-    catch (const ompl::Exception &e)
-    {
-        std::cerr << "ompl_mm_plan: " << e.what() << '\n';
-        return 2;
-    }
+    return ompl_mm::apps::runApp(
+        "ompl_mm_plan",
+        [&]
+        {
+            Options options;
+            int exitCode = 0;
+            if (!parseOptions(argc, argv, options, exitCode))
+                return exitCode;
+            ompl::msg::setLogLevel(options.verbose ? ompl::msg::LOG_INFO : ompl::msg::LOG_WARN);
+            return run(options);
+        });
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstddef>
 #include <initializer_list>
 #include <optional>
@@ -15,8 +16,9 @@
 
 namespace tinyxml2
 {
+    class XMLDocument;
     class XMLElement;
-}
+}  // namespace tinyxml2
 
 namespace ompl_mm
 {
@@ -124,4 +126,19 @@ namespace ompl_mm
         const tinyxml2::XMLElement *element_;
         std::string file_;
     };
+
+    /** The whole text of an input file; what names the kind of file in messages ("scene file").
+        @throws InputError "path: <what> not found" (or a directory, or unreadable). */
+    std::string readInputFile(const std::string &path, const std::string &what);
+
+    /** Parses xml into document and returns its only root element, which must be <rootName>.
+        @throws InputError naming sourceName and the line of a syntax error or a wrong root. */
+    XmlElement parseRootElement(tinyxml2::XMLDocument &document, const std::string &xml,
+                                const std::string &sourceName, const char *rootName);
+
+    /** Checks an element that carries only the given attributes and no children. */
+    void checkLeaf(const XmlElement &element, std::initializer_list<const char *> attributes);
+
+    /** Reads <origin xyz rpy>: rpy as in URDF, R = Rz(yaw) Ry(pitch) Rx(roll). */
+    Eigen::Isometry3d readOrigin(const XmlElement &element);
 }  // namespace ompl_mm

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs ompl_mm into a scratch prefix, builds the downstream project in test/downstream against
-# it with find_package(ompl_mm), and plans the installed mobile_blocked.xml scene with it.
+# Installs the project into a scratch prefix, builds the downstream project in test/downstream
+# against it with find_package(ompl_mm) and find_package(ompl_phys), and plans the installed
+# mobile_blocked.xml and physics/scene1.xml scenes with it.
 # Usage: run_downstream_test.sh BUILD_DIR SOURCE_DIR SCRATCH_DIR
 set -u
 
@@ -40,5 +41,12 @@ echo "== run on $scene"
 "$downstream_build/downstream_plan" "$scene"
 status=$?
 [ $status -eq 0 ] || fail "downstream_plan $scene exited with $status (expected 0)"
+
+phys_scene=$prefix/share/ompl_mm/scenes/physics/scene1.xml
+[ -f "$phys_scene" ] || fail "installed scene missing: $phys_scene"
+echo "== run on $phys_scene"
+"$downstream_build/downstream_phys" "$phys_scene"
+status=$?
+[ $status -eq 0 ] || fail "downstream_phys $phys_scene exited with $status (expected 0)"
 
 echo "downstream test passed"

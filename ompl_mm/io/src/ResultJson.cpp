@@ -1,30 +1,13 @@
 #include "ompl_mm/io/ResultJson.h"
 
+#include "ompl_mm/io/JsonText.h"
+
 #include <iomanip>
-#include <sstream>
 
 namespace ompl_mm
 {
     namespace
     {
-        std::string quoted(const std::string &text)
-        {
-            std::ostringstream out;
-            out << '"';
-            for (const char c : text)
-            {
-                if (c == '"' || c == '\\')
-                    out << '\\' << c;
-                else if (static_cast<unsigned char>(c) < 0x20)
-                    out << "\\u" << std::hex << std::setw(4) << std::setfill('0') << static_cast<int>(c)
-                        << std::dec;
-                else
-                    out << c;
-            }
-            out << '"';
-            return out.str();
-        }
-
         void writeStats(std::ostream &out, const MOPLStatistics &s)
         {
             out << "  \"stats\": {\n"
@@ -49,12 +32,12 @@ namespace ompl_mm
         ompl::base::PlannerData data(setup.getSpaceInformation());
         planner.getPlannerData(data);
         out << std::setprecision(10) << "{\n"
-            << "  \"scene\": " << quoted(run.scene) << ",\n"
-            << "  \"planner\": " << quoted(run.planner) << ",\n"
+            << "  \"scene\": " << jsonQuoted(run.scene) << ",\n"
+            << "  \"planner\": " << jsonQuoted(run.planner) << ",\n"
             << "  \"seed\": " << run.seed << ",\n"
             << "  \"time_limit_s\": " << run.timeLimit << ",\n"
             << "  \"solved\": " << (solved ? "true" : "false") << ",\n"
-            << "  \"status\": " << quoted(setup.getLastPlannerStatus().asString()) << ",\n"
+            << "  \"status\": " << jsonQuoted(setup.getLastPlannerStatus().asString()) << ",\n"
             << "  \"time_s\": " << setup.getLastPlanComputationTime() << ",\n"
             << "  \"tree_vertices\": " << data.numVertices() << ",\n"
             << "  \"tree_edges\": " << data.numEdges() << ",\n";
@@ -68,7 +51,7 @@ namespace ompl_mm
             bool first = true;
             for (const auto &[kind, count] : path.primitiveCounts())
             {
-                out << (first ? "" : ", ") << quoted(kind) << ": " << count;
+                out << (first ? "" : ", ") << jsonQuoted(kind) << ": " << count;
                 first = false;
             }
             out << "}";

@@ -5,9 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <system_error>
 
 #include "ompl_mm/scene/InputError.h"
@@ -43,27 +41,6 @@ namespace ompl_mm
                 child.fail("second " + child.tag() + " in " + parent.tag() +
                            ", only one is allowed (first at line " + std::to_string(first->second.line) +
                            ")");
-        }
-
-        /** Checks an element that carries only attributes. */
-        void checkLeaf(const XmlElement &element, std::initializer_list<const char *> attributes)
-        {
-            element.checkAttributes(attributes);
-            element.children({});
-        }
-
-        /** Reads <origin xyz rpy>: rpy as in URDF, R = Rz(yaw) Ry(pitch) Rx(roll). */
-        Eigen::Isometry3d readOrigin(const XmlElement &element)
-        {
-            checkLeaf(element, {"xyz", "rpy"});
-            const Eigen::Vector3d rpy = element.angles3("rpy", Eigen::Vector3d::Zero());
-            Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-            pose.translation() = element.vector3("xyz", Eigen::Vector3d::Zero());
-            pose.linear() = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
-                             Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
-                             Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
-                                .toRotationMatrix();
-            return pose;
         }
 
         Shape readShape(const XmlElement &element)
@@ -138,8 +115,6 @@ namespace ompl_mm
 
         Scene SceneParser::parse(const XmlElement &root)
         {
-            if (root.name() != "scene")
-                root.fail("the root element must be <scene>, found " + root.tag());
             root.checkAttributes({"name", "time_limit"});
             scene_.name = root.text("name", fs::path(scene_.file).stem().string());
             if (root.has("time_limit"))
@@ -422,32 +397,12 @@ namespace ompl_mm
 
     Scene loadScene(const std::string &path)
     {
-        std::error_code error;
-        if (fs::is_directory(path, error))
-            throw InputError(SourceLocation{path, 0}, "is a directory, not a scene file");
-        std::ifstream in(path, std::ios::binary);
-        if (!in)
-            throw InputError(SourceLocation{path, 0},
-                             fs::exists(path, error) ? "cannot read the scene file" : "scene file not found");
-        std::ostringstream text;
-        text << in.rdbuf();
-        return parseScene(text.str(), path, fs::path(path).parent_path().string());
+        return parseScene(readInputFile(path, "scene file"), path, fs::path(path).parent_path().string());
     }
 
     Scene parseScene(const std::string &xml, const std::string &sourceName, const std::string &baseDir)
     {
         tinyxml2::XMLDocument document;
-        if (document.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS)
-            throw InputError(
-                SourceLocation{sourceName, document.ErrorLineNum()},
-                "XML syntax error: " + describeXmlError(document.ErrorID(), document.ErrorStr()));
-        const tinyxml2::XMLElement *root = document.RootElement();
-        if (!root)
-            throw InputError(SourceLocation{sourceName, 0}, "no root element, expected <scene>");
-        if (const tinyxml2::XMLElement *second = root->NextSiblingElement())
-            throw InputError(
-                SourceLocation{sourceName, second->GetLineNum()},
-                "second root element <" + std::string(second->Name()) + ">, only one <scene> is allowed");
-        return SceneParser(sourceName, baseDir).parse(XmlElement(root, sourceName));
+        return SceneParser(sourceName, baseDir).parse(parseRootElement(document, xml, sourceName, "scene"));
     }
 }  // namespace ompl_mm

@@ -4,6 +4,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <utility>
 
@@ -343,5 +345,60 @@ namespace ompl_mm
             values.emplace_back(parsed);
         }
         return values;
+    }
+
+    std::string readInputFile(const std::string &path, const std::string &what)
+    {
+        std::error_code error;
+        if (std::filesystem::is_directory(path, error))
+            throw InputError(SourceLocation{path, 0}, "is a directory, not a " + what);
+        std::ifstream in(path, std::ios::binary);
+        if (!in)
+            throw InputError(SourceLocation{path, 0}, std::filesystem::exists(path, error)
+                                                          ? "cannot read the " + what
+                                                          : what + " not found");
+        std::ostringstream text;
+        text << in.rdbuf();
+        return text.str();
+    }
+
+    XmlElement parseRootElement(tinyxml2::XMLDocument &document, const std::string &xml,
+                                const std::string &sourceName, const char *rootName)
+    {
+        const std::string expected = "<" + std::string(rootName) + ">";
+        if (document.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS)
+            throw InputError(
+                SourceLocation{sourceName, document.ErrorLineNum()},
+                "XML syntax error: " + describeXmlError(document.ErrorID(), document.ErrorStr()));
+        const tinyxml2::XMLElement *root = document.RootElement();
+        if (!root)
+            throw InputError(SourceLocation{sourceName, 0}, "no root element, expected " + expected);
+        if (const tinyxml2::XMLElement *second = root->NextSiblingElement())
+            throw InputError(SourceLocation{sourceName, second->GetLineNum()},
+                             "second root element <" + std::string(second->Name()) + ">, only one " +
+                                 expected + " is allowed");
+        const XmlElement element(root, sourceName);
+        if (element.name() != rootName)
+            element.fail("the root element must be " + expected + ", found " + element.tag());
+        return element;
+    }
+
+    void checkLeaf(const XmlElement &element, std::initializer_list<const char *> attributes)
+    {
+        element.checkAttributes(attributes);
+        element.children({});
+    }
+
+    Eigen::Isometry3d readOrigin(const XmlElement &element)
+    {
+        checkLeaf(element, {"xyz", "rpy"});
+        const Eigen::Vector3d rpy = element.angles3("rpy", Eigen::Vector3d::Zero());
+        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+        pose.translation() = element.vector3("xyz", Eigen::Vector3d::Zero());
+        pose.linear() = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
+                         Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+                         Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+                            .toRotationMatrix();
+        return pose;
     }
 }  // namespace ompl_mm

@@ -1,0 +1,62 @@
+/* Everything OMPL's control planners need for a physics scene, as a control::SimpleSetup: the
+   state space (PhysicsStateSpace, with the robot-position projection registered as its default
+   projection for KPIECE1, EST and PDST), a 2-D force control space bounded by the scene's maximum
+   force, the ODE propagator with the manipulation knowledge, the validity checker, the start and a
+   sampleable goal, the propagation step and control durations, and a grid decomposition for
+   SyclopRRT and SyclopEST. Planners are picked by name with setPlannerByName(), or set directly.
+   Not copyable: it owns the ODE world. */
+#pragma once
+
+#include "ompl_phys/base/PhysicsStateSpace.h"
+#include "ompl_phys/control/PhysicsStatePropagator.h"
+#include "ompl_phys/control/RobotGridDecomposition.h"
+#include "ompl_phys/knowledge/ManipulationKnowledge.h"
+#include "ompl_phys/world/PhysicsWorld.h"
+
+#include <ompl/control/SimpleSetup.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ompl_phys
+{
+    class PhysicsSetup : public ompl::control::SimpleSetup
+    {
+    public:
+        /** @throws ompl_mm::InputError naming the scene file and line when the start breaks a rule or
+            overlaps something, or a fixed body covers the goal. */
+        explicit PhysicsSetup(const PhysicsScene &scene);
+        PhysicsSetup(const PhysicsSetup &) = delete;
+        PhysicsSetup &operator=(const PhysicsSetup &) = delete;
+
+        const PhysicsScene &scene() const { return world_->scene(); }
+        const PhysicsWorld &world() const { return *world_; }
+        const ManipulationKnowledge &knowledge() const { return *knowledge_; }
+        const PhysicsStateSpace &physicsSpace() const { return *space_; }
+        const PhysicsStatePropagator &propagator() const { return *propagator_; }
+        const std::shared_ptr<RobotGridDecomposition> &decomposition() const { return decomposition_; }
+
+        /** The names setPlannerByName() accepts: rrt, est, kpiece, sycloprrt, syclopest, pdst, sst. */
+        static const std::vector<std::string> &plannerNames();
+
+        /** Allocates the named control planner with the scene's goal bias where it has one.
+            @throws ompl::Exception for an unknown name (the message lists the known ones). */
+        void setPlannerByName(const std::string &name);
+
+        /** Solved with an exact solution (solve() also reports approximate ones as solved). */
+        bool haveExactSolution() const;
+
+    private:
+        /** Takes ownership of the world, which the space information refers to. */
+        explicit PhysicsSetup(std::unique_ptr<PhysicsWorld> world);
+        static ompl::control::SpaceInformationPtr spaceInformation(const PhysicsWorld &world);
+        void checkStart() const;
+
+        std::unique_ptr<PhysicsWorld> world_;
+        std::unique_ptr<ManipulationKnowledge> knowledge_;
+        std::shared_ptr<PhysicsStateSpace> space_;
+        std::shared_ptr<PhysicsStatePropagator> propagator_;
+        std::shared_ptr<RobotGridDecomposition> decomposition_;
+    };
+}  // namespace ompl_phys

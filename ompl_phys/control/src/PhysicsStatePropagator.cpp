@@ -1,0 +1,57 @@
+#include "ompl_phys/control/PhysicsStatePropagator.h"
+
+#include <ompl/control/SpaceInformation.h>
+#include <ompl/control/spaces/RealVectorControlSpace.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ompl_phys
+{
+    PhysicsStatePropagator::PhysicsStatePropagator(const ompl::control::SpaceInformationPtr &si,
+                                                   PhysicsWorld &world,
+                                                   const ManipulationKnowledge &knowledge)
+        : ompl::control::StatePropagator(si),
+          space_(*si->getStateSpace()->as<PhysicsStateSpace>()),
+          world_(world),
+          knowledge_(knowledge),
+          stepSize_(world.scene().limits.stepSize),
+          substepsPerStep_(world.scene().contact.substeps)
+    {
+    }
+
+    void PhysicsStatePropagator::propagate(const ompl::base::State *state,
+                                           const ompl::control::Control *control, double duration,
+                                           ompl::base::State *result) const
+    {
+        ++counters_.propagations;
+        if (state->as<PhysicsStateSpace::StateType>()->violation != Violation::None)
+        {
+            space_.copyState(result, state);  // a broken state stays broken
+            return;
+        }
+        const double *force = control->as<ompl::control::RealVectorControlSpace::ControlType>()->values;
+        const auto substeps = static_cast<unsigned int>(
+            std::max(1.0, std::round(duration / stepSize_ * static_cast<double>(substepsPerStep_))));
+        const double dt = duration / substeps;
+
+        PhysicsWorld::resetRandomSeed();
+        space_.readState(state, states_);
+        world_.setStates(states_);
+        Violation violation = Violation::None;
+        for (unsigned int k = 0; k < substeps && violation == Violation::None; ++k)
+        {
+            world_.step(Eigen::Vector2d(force[0], force[1]), dt);
+            ++counters_.substeps;
+            // the robot's touches were found before the step: judge them at the poses of that moment
+            violation = knowledge_.checkTouches(world_.touches(), states_);
+            world_.readStates(states_);
+            if (violation == Violation::None)
+                violation = knowledge_.checkStates(states_);
+        }
+        space_.writeState(states_, result);
+        result->as<PhysicsStateSpace::StateType>()->violation = violation;
+        if (violation != Violation::None)
+            ++counters_.stops[static_cast<std::size_t>(violation)];
+    }
+}  // namespace ompl_phys

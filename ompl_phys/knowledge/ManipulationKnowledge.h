@@ -1,0 +1,60 @@
+/* The manipulation knowledge of the ontological physics-based planner (Muhayyuddin, Akbari,
+   Rosell, "Ontological physics-based motion planning for manipulation", ETFA 2015; benchmarked
+   in "Physics-based motion planning: evaluation criteria and benchmarking", ROBOT 2015) as rules
+   over simulated states. Each body is fixed, freely manipulatable or constraint-oriented:
+   - the robot must not touch a fixed body;
+   - the robot may touch a constraint-oriented body only while its centre lies in the body's push
+     region (a strip along the push axis), and the body may only slide along that axis without
+     turning;
+   - free bodies may be touched and moved in any way.
+   It also reasons about the goal: which bodies occupy the goal region, and where a goal state
+   puts them so the robot fits there (constraint-oriented bodies slide along their axis, free
+   bodies move straight away from the goal). The scene's planning limits (regions, speeds) and
+   finiteness are checked with the same vocabulary of violations. */
+#pragma once
+
+#include "ompl_phys/knowledge/Violation.h"
+#include "ompl_phys/scene/PhysicsScene.h"
+#include "ompl_phys/world/BodyState.h"
+
+#include <vector>
+
+namespace ompl_phys
+{
+    class ManipulationKnowledge
+    {
+    public:
+        /** scene must outlive the knowledge. movable: scene body index of each moving body after the robot
+         * (PhysicsWorld's numbering). */
+        ManipulationKnowledge(const PhysicsScene &scene, std::vector<std::size_t> movable);
+
+        /** Whether the robot, centred at robotCentre, may touch scene body `body` in state bodyState
+            (ignored for fixed and free bodies). */
+        bool touchAllowed(std::size_t body, const Eigen::Vector3d &robotCentre,
+                          const BodyState &bodyState) const;
+
+        /** The first broken rule among the robot's touches (scene body indices) in states. */
+        Violation checkTouches(const std::vector<std::size_t> &touches, const BodyStates &states) const;
+
+        /** The first broken rule or limit of the states alone: finiteness, regions, speeds, and
+            constraint-oriented bodies on their axes. */
+        Violation checkStates(const BodyStates &states) const;
+
+        /** Moving bodies (indices >= 1) whose footprint overlaps the robot standing anywhere in the
+            goal disc, in states. */
+        std::vector<std::size_t> goalOccupants(const BodyStates &states) const;
+
+        /** Fixed scene bodies whose footprint overlaps the goal centre with the robot there: the goal
+            cannot be reached. */
+        std::vector<std::size_t> fixedBodiesOnGoal() const;
+
+        /** Moves the goal occupants of states out of the way of a robot at robotGoal (on the goal
+            disc): constraint-oriented bodies along their push axis (to the nearer free side), free
+            bodies straight away from robotGoal, each with clearance metres to spare. */
+        void clearGoal(BodyStates &states, const Eigen::Vector2d &robotGoal, double clearance) const;
+
+    private:
+        const PhysicsScene &scene_;
+        std::vector<std::size_t> movable_;
+    };
+}  // namespace ompl_phys

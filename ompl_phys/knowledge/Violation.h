@@ -1,0 +1,24 @@
+/* Why a simulated state is not acceptable: a broken manipulation-knowledge rule or a planning
+   limit. Propagation stops at the first sub-step with a violation. */
+#pragma once
+
+#include <cstdint>
+
+namespace ompl_phys
+{
+    enum class Violation : std::uint8_t
+    {
+        None = 0,
+        TouchedFixedBody,      ///< the robot touched a fixed body
+        TouchedOutsideRegion,  ///< the robot touched a constraint-oriented body outside its push region
+        LeftPushAxis,          ///< a constraint-oriented body moved off its axis or turned
+        OutsideRegion,         ///< the robot or a body left its region
+        TooFast,               ///< a speed limit was exceeded
+        NotFinite,             ///< the simulation produced NaN or infinity
+    };
+
+    constexpr int VIOLATION_KINDS = 7;
+
+    /** A short snake_case name, for logs and result files ("touched_fixed_body"). */
+    const char *violationName(Violation violation);
+}  // namespace ompl_phys

@@ -1,0 +1,165 @@
+#include "ompl_phys/knowledge/ManipulationKnowledge.h"
+
+#include "ompl_phys/knowledge/Footprint.h"
+
+#include <cmath>
+#include <utility>
+
+namespace ompl_phys
+{
+    namespace
+    {
+        /** Granularity of the search for a place that clears the goal, metres. */
+        constexpr double CLEARING_STEP = 0.01;
+
+        double cross(const Eigen::Vector2d &a, const Eigen::Vector2d &b)
+        {
+            return a.x() * b.y() - a.y() * b.x();
+        }
+
+        bool withinSpeed(const Eigen::Vector3d &velocity, double limit)
+        {
+            return velocity.cwiseAbs().maxCoeff() <= limit;
+        }
+    }  // namespace
+
+    ManipulationKnowledge::ManipulationKnowledge(const PhysicsScene &scene, std::vector<std::size_t> movable)
+        : scene_(scene), movable_(std::move(movable))
+    {
+    }
+
+    bool ManipulationKnowledge::touchAllowed(std::size_t body, const Eigen::Vector3d &robotCentre,
+                                             const BodyState &bodyState) const
+    {
+        const PhysicsBody &b = scene_.bodies[body];
+        if (b.kind == BodyKind::Fixed)
+            return false;
+        if (b.kind == BodyKind::Free)
+            return true;
+        // the push region: a strip about the push axis, measured on the floor in the body's frame
+        const Eigen::Vector3d local = bodyState.orientation.inverse() * (robotCentre - bodyState.position);
+        const Eigen::Vector2d axis = b.push.axis.head<2>().normalized();
+        return std::abs(cross(axis, local.head<2>())) <= b.push.stripHalfWidth;
+    }
+
+    Violation ManipulationKnowledge::checkTouches(const std::vector<std::size_t> &touches,
+                                                  const BodyStates &states) const
+    {
+        for (std::size_t body : touches)
+        {
+            const BodyKind kind = scene_.bodies[body].kind;
+            if (kind == BodyKind::Fixed)
+                return Violation::TouchedFixedBody;
+            if (kind != BodyKind::Constrained)
+                continue;
+            for (std::size_t i = 0; i < movable_.size(); ++i)
+                if (movable_[i] == body && !touchAllowed(body, states[0].position, states[i + 1]))
+                    return Violation::TouchedOutsideRegion;
+        }
+        return Violation::None;
+    }
+
+    Violation ManipulationKnowledge::checkStates(const BodyStates &states) const
+    {
+        const PlanningLimits &limits = scene_.limits;
+        for (const BodyState &s : states)
+            if (!s.isFinite())
+                return Violation::NotFinite;
+        const BodyState &robot = states[0];
+        if (!limits.robotRegion.contains(robot.position.head<2>()))
+            return Violation::OutsideRegion;
+        if (!withinSpeed(robot.linearVelocity, limits.maxRobotSpeed) ||
+            !withinSpeed(robot.angularVelocity, limits.maxAngularSpeed))
+            return Violation::TooFast;
+        for (std::size_t i = 0; i < movable_.size(); ++i)
+        {
+            const BodyState &s = states[i + 1];
+            const PhysicsBody &body = scene_.bodies[movable_[i]];
+            if (!limits.bodyRegion.contains(s.position.head<2>()))
+                return Violation::OutsideRegion;
+            if (!withinSpeed(s.linearVelocity, limits.maxBodySpeed) ||
+                !withinSpeed(s.angularVelocity, limits.maxAngularSpeed))
+                return Violation::TooFast;
+            if (body.kind != BodyKind::Constrained)
+                continue;
+            const Eigen::Quaterniond start(body.start.linear());
+            const Eigen::Vector2d axis = (start * body.push.axis).head<2>().normalized();
+            const Eigen::Vector2d offset = (s.position - body.start.translation()).head<2>();
+            if (std::abs(cross(axis, offset)) > body.push.lateralTolerance ||
+                start.angularDistance(s.orientation) > body.push.angleTolerance)
+                return Violation::LeftPushAxis;
+        }
+        return Violation::None;
+    }
+
+    std::vector<std::size_t> ManipulationKnowledge::goalOccupants(const BodyStates &states) const
+    {
+        std::vector<std::size_t> occupants;
+        const double reachOfGoal = scene_.goal.radius + scene_.robot.radius;
+        for (std::size_t i = 0; i < movable_.size(); ++i)
+        {
+            const BodyState &s = states[i + 1];
+            if (footprintDistance(scene_.bodies[movable_[i]].shape, s.position.head<2>(),
+                                  yawOf(s.orientation), scene_.goal.centre) < reachOfGoal)
+                occupants.push_back(i + 1);
+        }
+        return occupants;
+    }
+
+    std::vector<std::size_t> ManipulationKnowledge::fixedBodiesOnGoal() const
+    {
+        std::vector<std::size_t> blocking;
+        for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
+        {
+            const PhysicsBody &body = scene_.bodies[i];
+            if (body.kind == BodyKind::Fixed &&
+                footprintDistance(body.shape, body.start.translation().head<2>(),
+                                  yawOf(Eigen::Quaterniond(body.start.linear())),
+                                  scene_.goal.centre) < scene_.robot.radius)
+                blocking.push_back(i);
+        }
+        return blocking;
+    }
+
+    void ManipulationKnowledge::clearGoal(BodyStates &states, const Eigen::Vector2d &robotGoal,
+                                          double clearance) const
+    {
+        const double needed = scene_.robot.radius + clearance;
+        for (std::size_t i = 0; i < movable_.size(); ++i)
+        {
+            BodyState &s = states[i + 1];
+            const PhysicsBody &body = scene_.bodies[movable_[i]];
+            const double yaw = yawOf(s.orientation);
+            const Eigen::Vector2d from = s.position.head<2>();
+            auto clearAlong = [&](const Eigen::Vector2d &direction)
+            {
+                for (double shift = 0.0; shift < scene_.limits.bodyRegion.diagonal().norm();
+                     shift += CLEARING_STEP)
+                {
+                    const Eigen::Vector2d at = from + shift * direction;
+                    if (!scene_.limits.bodyRegion.contains(at))
+                        return std::numeric_limits<double>::infinity();
+                    if (footprintDistance(body.shape, at, yaw, robotGoal) >= needed)
+                        return shift;
+                }
+                return std::numeric_limits<double>::infinity();
+            };
+            if (footprintDistance(body.shape, from, yaw, robotGoal) >= needed)
+                continue;
+            Eigen::Vector2d direction = (from - robotGoal).normalized();
+            if (body.kind == BodyKind::Constrained)
+                direction = (s.orientation * body.push.axis).head<2>().normalized();
+            else if (!direction.allFinite())
+                direction = Eigen::Vector2d::UnitX();
+            double shift = clearAlong(direction);
+            if (body.kind == BodyKind::Constrained)
+            {
+                const double back = clearAlong(-direction);
+                if (back < shift)
+                    shift = back, direction = -direction;
+            }
+            if (std::isfinite(shift))
+                s.position.head<2>() = from + shift * direction;
+        }
+    }
+}  // namespace ompl_phys

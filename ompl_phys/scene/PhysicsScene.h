@@ -1,0 +1,147 @@
+/* A physics-based pushing problem as plain data: a sphere robot driven by a planar force, rigid
+   bodies classified by the manipulation knowledge (fixed, freely manipulatable,
+   constraint-oriented), the floor, materials, contact and propagation parameters, the planning
+   limits and the goal region. PhysicsSceneLoader reads one from a scene file; code may also fill
+   one directly. Units: metres, kilograms, seconds, newtons, radians. */
+#pragma once
+
+#include "ompl_mm/scene/Scene.h"
+
+#include <Eigen/Geometry>
+
+#include <string>
+#include <vector>
+
+namespace ompl_phys
+{
+    using ompl_mm::SourceLocation;
+
+    /** What the manipulation knowledge says about a body. */
+    enum class BodyKind
+    {
+        Fixed,       ///< never moves; the robot must not touch it
+        Free,        ///< may be pushed from anywhere, in any direction
+        Constrained  ///< may be pushed only from its push region and only along its push axis
+    };
+
+    /** A collision shape: URDF's box, cylinder (along z) and sphere, plus an upright triangular prism. */
+    struct PhysicsShape
+    {
+        enum class Kind
+        {
+            Box,
+            Cylinder,
+            Sphere,
+            Prism
+        };
+        Kind kind{Kind::Box};
+        Eigen::Vector3d boxSize{Eigen::Vector3d::Zero()};  ///< box edge lengths
+        double radius{0.0};                                ///< cylinder or sphere radius
+        double length{0.0};                                ///< cylinder or prism length along z
+        Eigen::Matrix<double, 2, 3> triangle;              ///< prism corners (columns), x y in the body frame
+
+        /** Half of the extent along z: how high the centre sits above a floor it rests on. */
+        double halfHeight() const;
+
+        /** Radius of the smallest vertical cylinder about the body's z axis that contains the shape. */
+        double boundingRadius() const;
+    };
+
+    /** Where and along which axis a constraint-oriented body may be pushed. */
+    struct PushConstraint
+    {
+        Eigen::Vector3d axis{Eigen::Vector3d::UnitX()};  ///< unit push axis in the body frame
+        double stripHalfWidth{
+            0.0};  ///< the robot centre may touch the body only within this distance of the axis line
+        double lateralTolerance{0.0};  ///< allowed distance of the body centre from its start axis line
+        double angleTolerance{0.0};    ///< allowed rotation away from the start orientation, radians
+    };
+
+    /** A rigid body of the scene (not the robot). */
+    struct PhysicsBody
+    {
+        std::string name;
+        BodyKind kind{BodyKind::Free};
+        PhysicsShape shape;
+        Eigen::Isometry3d start{Eigen::Isometry3d::Identity()};  ///< pose at the start
+        double mass{0.0};                                        ///< kg; unused for fixed bodies
+        PushConstraint push;                                     ///< only for constrained bodies
+        SourceLocation where;
+    };
+
+    /** The robot: a sphere on the floor, driven by a horizontal force. */
+    struct PhysicsRobot
+    {
+        std::string name{"robot"};
+        double radius{0.0};                              ///< m
+        double mass{0.0};                                ///< kg
+        Eigen::Vector3d start{Eigen::Vector3d::Zero()};  ///< centre at the start
+        SourceLocation where;
+    };
+
+    /** Coulomb friction coefficients between classes of bodies (the material model). */
+    struct Materials
+    {
+        double robotFloor{0.0};  ///< the robot slides on the floor
+        double defaultMu{0.7};   ///< every other pair
+        SourceLocation where;
+    };
+
+    /** How ODE integrates and handles contacts. */
+    struct ContactParameters
+    {
+        double erp{0.5};              ///< contact error reduction parameter, in (0, 1]
+        double cfm{1e-4};             ///< contact constraint force mixing, >= 0
+        unsigned int maxContacts{3};  ///< contact points per touching pair
+        unsigned int iterations{20};  ///< QuickStep iterations
+        unsigned int substeps{7};     ///< ODE steps per propagation step
+        double gravity{-9.81};        ///< along z, m/s^2
+        SourceLocation where;
+    };
+
+    /** Limits of the planning problem. */
+    struct PlanningLimits
+    {
+        Eigen::AlignedBox2d robotRegion;   ///< where the robot centre may be
+        Eigen::AlignedBox2d bodyRegion;    ///< where movable body centres may be
+        double maxRobotSpeed{1.0};         ///< m/s, each horizontal velocity component of the robot
+        double maxBodySpeed{5.0};          ///< m/s, any linear velocity component of a movable body
+        double maxAngularSpeed{100.0};     ///< rad/s, any angular velocity component (divergence guard)
+        double maxForce{10.0};             ///< N, each control component
+        double stepSize{0.07};             ///< s, propagation step
+        unsigned int minControlSteps{1};   ///< shortest control duration, in steps
+        unsigned int maxControlSteps{10};  ///< longest control duration, in steps
+        double goalBias{0.05};             ///< for planners that have one
+        SourceLocation where;
+    };
+
+    /** The goal: the robot centre within a disc. */
+    struct GoalDisc
+    {
+        Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
+        double radius{0.0};
+        SourceLocation where;
+    };
+
+    /** A whole problem. */
+    struct PhysicsScene
+    {
+        std::string name;
+        std::string file;  ///< scene file it came from; empty for scenes built in code
+        PhysicsRobot robot;
+        std::vector<PhysicsBody> bodies;
+        Eigen::Vector2d floorSize{
+            Eigen::Vector2d::Zero()};  ///< floor extent (centred at the origin), drawing only
+        Materials materials;
+        ContactParameters contact;
+        PlanningLimits limits;
+        GoalDisc goal;
+        double timeLimit{60.0};  ///< default planning time, s
+
+        /** Index of the body with this name. @throws ompl::Exception when there is none. */
+        std::size_t bodyIndex(const std::string &name) const;
+
+        /** Indices of the bodies that move (free and constrained), in scene order. */
+        std::vector<std::size_t> movableBodies() const;
+    };
+}  // namespace ompl_phys

@@ -1,0 +1,352 @@
+#include "ompl_phys/scene/PhysicsSceneLoader.h"
+
+#include <tinyxml2.h>
+
+#include <cmath>
+#include <filesystem>
+#include <locale>
+#include <map>
+#include <sstream>
+
+#include "ompl_mm/scene/InputError.h"
+#include "ompl_mm/scene/XmlReading.h"
+
+namespace ompl_phys
+{
+    namespace
+    {
+        using ompl_mm::XmlElement;
+
+        /** A whole number in [low, high], or fallback when the attribute is absent. */
+        unsigned int readCount(const XmlElement &element, const char *attribute, unsigned int low,
+                               unsigned int high, unsigned int fallback)
+        {
+            if (!element.has(attribute))
+                return fallback;
+            const double value = element.number(attribute);
+            if (value != std::floor(value) || value < low || value > high)
+                element.fail(attribute, std::string(attribute) + " must be a whole number in [" +
+                                            std::to_string(low) + ", " + std::to_string(high) + "], got " +
+                                            element.text(attribute));
+            return static_cast<unsigned int>(value);
+        }
+
+        std::string formatNumber(double value)
+        {
+            std::ostringstream out;
+            out.imbue(std::locale::classic());
+            out << value;
+            return out.str();
+        }
+
+        /** A number in [low, high], or fallback when the attribute is absent. */
+        double readInRange(const XmlElement &element, const char *attribute, double low, double high,
+                           double fallback)
+        {
+            const double value = element.number(attribute, fallback);
+            if (value < low || value > high)
+                element.fail(attribute, std::string(attribute) + " must be in [" + formatNumber(low) + ", " +
+                                            formatNumber(high) + "], got " + element.text(attribute));
+            return value;
+        }
+
+        /** "xmin xmax ymin ymax" as a box, each max above its min. */
+        Eigen::AlignedBox2d readRegion(const XmlElement &element, const char *attribute,
+                                       const Eigen::AlignedBox2d &fallback)
+        {
+            if (!element.has(attribute))
+                return fallback;
+            const std::vector<double> v = element.numbers(attribute, 4);
+            if (!(v[0] < v[1] && v[2] < v[3]))
+                element.fail(attribute,
+                             std::string(attribute) + " must be \"xmin xmax ymin ymax\" with min < max");
+            return Eigen::AlignedBox2d(Eigen::Vector2d(v[0], v[2]), Eigen::Vector2d(v[1], v[3]));
+        }
+
+        PhysicsShape readShape(const XmlElement &element)
+        {
+            PhysicsShape shape;
+            const std::string name = element.name();
+            if (name == "box")
+            {
+                ompl_mm::checkLeaf(element, {"size"});
+                shape.kind = PhysicsShape::Kind::Box;
+                shape.boxSize = element.positiveVector3("size");
+            }
+            else if (name == "cylinder")
+            {
+                ompl_mm::checkLeaf(element, {"radius", "length"});
+                shape.kind = PhysicsShape::Kind::Cylinder;
+                shape.radius = element.positive("radius");
+                shape.length = element.positive("length");
+            }
+            else if (name == "sphere")
+            {
+                ompl_mm::checkLeaf(element, {"radius"});
+                shape.kind = PhysicsShape::Kind::Sphere;
+                shape.radius = element.positive("radius");
+            }
+            else
+            {
+                ompl_mm::checkLeaf(element, {"corners", "length"});
+                shape.kind = PhysicsShape::Kind::Prism;
+                const std::vector<double> c = element.numbers("corners", 6);
+                shape.triangle << c[0], c[2], c[4], c[1], c[3], c[5];
+                shape.length = element.positive("length");
+                const Eigen::Vector2d a = shape.triangle.col(1) - shape.triangle.col(0);
+                const Eigen::Vector2d b = shape.triangle.col(2) - shape.triangle.col(0);
+                const double area2 = a.x() * b.y() - a.y() * b.x();
+                if (area2 <= 1e-9)
+                    element.fail("corners",
+                                 "the prism's corners must be counter-clockwise and not collinear");
+            }
+            return shape;
+        }
+
+        /** Builds a PhysicsScene from the <physics_scene> element. */
+        class PhysicsSceneParser
+        {
+        public:
+            explicit PhysicsSceneParser(const std::string &file) { scene_.file = file; }
+
+            PhysicsScene parse(const XmlElement &root);
+
+        private:
+            void readSimulation(const XmlElement &element);
+            void readMaterials(const XmlElement &element);
+            void readLimits(const XmlElement &element);
+            void readFloor(const XmlElement &element);
+            void readRobot(const XmlElement &element);
+            void readBody(const XmlElement &element);
+            void readPush(const XmlElement &element, PhysicsBody &body);
+            void readGoal(const XmlElement &element);
+            void checkPlacement(const XmlElement &robot, const XmlElement &goal) const;
+            void checkBodies() const;
+
+            PhysicsScene scene_;
+            std::map<std::string, SourceLocation> names_;
+        };
+
+        PhysicsScene PhysicsSceneParser::parse(const XmlElement &root)
+        {
+            root.checkAttributes({"name", "time_limit"});
+            scene_.name = root.text("name", std::filesystem::path(scene_.file).stem().string());
+            if (root.has("time_limit"))
+                scene_.timeLimit = root.positive("time_limit");
+
+            std::map<std::string, std::vector<XmlElement>> byTag;
+            for (const XmlElement &child :
+                 root.children({"simulation", "materials", "limits", "floor", "robot", "body", "goal"}))
+            {
+                std::vector<XmlElement> &same = byTag[child.name()];
+                if (child.name() != "body" && !same.empty())
+                    child.fail("second " + child.tag() + ", only one is allowed (first at line " +
+                               std::to_string(same.front().where().line) + ")");
+                same.push_back(child);
+            }
+            for (const char *required : {"robot", "goal"})
+                if (byTag[required].empty())
+                    root.fail("missing <" + std::string(required) + ">");
+
+            for (const XmlElement &e : byTag["simulation"])
+                readSimulation(e);
+            for (const XmlElement &e : byTag["materials"])
+                readMaterials(e);
+            for (const XmlElement &e : byTag["limits"])
+                readLimits(e);
+            for (const XmlElement &e : byTag["floor"])
+                readFloor(e);
+            readRobot(byTag["robot"].front());
+            for (const XmlElement &e : byTag["body"])
+                readBody(e);
+            readGoal(byTag["goal"].front());
+            checkPlacement(byTag["robot"].front(), byTag["goal"].front());
+            checkBodies();
+            return scene_;
+        }
+
+        void PhysicsSceneParser::readSimulation(const XmlElement &element)
+        {
+            ompl_mm::checkLeaf(element, {"gravity", "erp", "cfm", "max_contacts", "iterations", "substeps"});
+            ContactParameters &c = scene_.contact;
+            c.gravity = element.number("gravity", c.gravity);
+            c.erp = readInRange(element, "erp", 1e-6, 1.0, c.erp);
+            c.cfm = readInRange(element, "cfm", 0.0, 1.0, c.cfm);
+            c.maxContacts = readCount(element, "max_contacts", 1, 16, c.maxContacts);
+            c.iterations = readCount(element, "iterations", 1, 1000, c.iterations);
+            c.substeps = readCount(element, "substeps", 1, 1000, c.substeps);
+            c.where = element.where();
+        }
+
+        void PhysicsSceneParser::readMaterials(const XmlElement &element)
+        {
+            ompl_mm::checkLeaf(element, {"robot_floor", "default"});
+            scene_.materials.robotFloor = element.nonNegative("robot_floor", scene_.materials.robotFloor);
+            scene_.materials.defaultMu = element.nonNegative("default", scene_.materials.defaultMu);
+            scene_.materials.where = element.where();
+        }
+
+        void PhysicsSceneParser::readLimits(const XmlElement &element)
+        {
+            ompl_mm::checkLeaf(
+                element, {"robot_region", "body_region", "max_robot_speed", "max_body_speed",
+                          "max_angular_speed", "max_force", "step", "min_steps", "max_steps", "goal_bias"});
+            PlanningLimits &l = scene_.limits;
+            l.robotRegion = readRegion(element, "robot_region", l.robotRegion);
+            l.bodyRegion = readRegion(element, "body_region", l.bodyRegion);
+            if (element.has("max_robot_speed"))
+                l.maxRobotSpeed = element.positive("max_robot_speed");
+            if (element.has("max_body_speed"))
+                l.maxBodySpeed = element.positive("max_body_speed");
+            if (element.has("max_angular_speed"))
+                l.maxAngularSpeed = element.positive("max_angular_speed");
+            if (element.has("max_force"))
+                l.maxForce = element.positive("max_force");
+            if (element.has("step"))
+                l.stepSize = element.positive("step");
+            l.minControlSteps = readCount(element, "min_steps", 1, 100000, l.minControlSteps);
+            l.maxControlSteps = readCount(element, "max_steps", 1, 100000, l.maxControlSteps);
+            if (l.maxControlSteps < l.minControlSteps)
+                element.fail("max_steps", "max_steps (" + std::to_string(l.maxControlSteps) +
+                                              ") must not be below min_steps (" +
+                                              std::to_string(l.minControlSteps) + ")");
+            l.goalBias = readInRange(element, "goal_bias", 0.0, 1.0, l.goalBias);
+            l.where = element.where();
+        }
+
+        void PhysicsSceneParser::readFloor(const XmlElement &element)
+        {
+            ompl_mm::checkLeaf(element, {"size"});
+            scene_.floorSize = element.vector2("size");
+            if (!(scene_.floorSize.array() > 0.0).all())
+                element.fail("size", "the floor size must be two positive numbers");
+        }
+
+        void PhysicsSceneParser::readRobot(const XmlElement &element)
+        {
+            ompl_mm::checkLeaf(element, {"name", "radius", "mass", "start"});
+            PhysicsRobot &robot = scene_.robot;
+            robot.name = element.text("name", robot.name);
+            robot.radius = element.positive("radius");
+            robot.mass = element.positive("mass");
+            robot.start << element.vector2("start"), robot.radius;
+            robot.where = element.where();
+            names_.emplace(robot.name, robot.where);
+        }
+
+        void PhysicsSceneParser::readBody(const XmlElement &element)
+        {
+            element.checkAttributes({"name", "kind", "mass"});
+            PhysicsBody body;
+            body.name = element.text("name");
+            body.where = element.where();
+            const auto [first, inserted] = names_.emplace(body.name, body.where);
+            if (!inserted)
+                element.fail("name", "second body named '" + body.name + "' (first at line " +
+                                         std::to_string(first->second.line) + ")");
+            const std::string kind = element.text("kind");
+            if (kind == "fixed")
+                body.kind = BodyKind::Fixed;
+            else if (kind == "free")
+                body.kind = BodyKind::Free;
+            else if (kind == "constrained")
+                body.kind = BodyKind::Constrained;
+            else
+                element.fail("kind", "unknown kind '" + kind + "', expected fixed, free or constrained");
+            if (body.kind == BodyKind::Fixed && element.has("mass"))
+                element.fail("mass", "a fixed body has no mass");
+            if (body.kind != BodyKind::Fixed)
+                body.mass = element.positive("mass");
+
+            std::vector<XmlElement> shapes;
+            bool hasOrigin = false;
+            bool hasPush = false;
+            for (const XmlElement &child :
+                 element.children({"origin", "box", "cylinder", "sphere", "prism", "push"}))
+            {
+                const std::string name = child.name();
+                if (name == "origin" || name == "push")
+                {
+                    bool &seen = name == "origin" ? hasOrigin : hasPush;
+                    if (seen)
+                        child.fail("second " + child.tag() + " in body '" + body.name + "'");
+                    seen = true;
+                    if (name == "origin")
+                        body.start = ompl_mm::readOrigin(child);
+                    else
+                        readPush(child, body);
+                }
+                else
+                    shapes.push_back(child);
+            }
+            if (shapes.size() != 1)
+                (shapes.empty() ? element : shapes[1])
+                    .fail("body '" + body.name +
+                          "' needs exactly one shape (<box>, <cylinder>, <sphere> or <prism>), found " +
+                          std::to_string(shapes.size()));
+            body.shape = readShape(shapes.front());
+            if (body.kind == BodyKind::Constrained && !hasPush)
+                element.fail("constrained body '" + body.name + "' needs a <push> element (axis and region)");
+            scene_.bodies.push_back(body);
+        }
+
+        void PhysicsSceneParser::readPush(const XmlElement &element, PhysicsBody &body)
+        {
+            ompl_mm::checkLeaf(element, {"axis", "strip_half_width", "lateral_tolerance", "angle_tolerance"});
+            if (body.kind != BodyKind::Constrained)
+                element.fail("<push> is only for constrained bodies, '" + body.name + "' is not");
+            const Eigen::Vector3d axis = element.vector3("axis");
+            if (axis.norm() < 1e-9)
+                element.fail("axis", "the push axis must not be zero");
+            body.push.axis = axis.normalized();
+            body.push.stripHalfWidth = element.positive("strip_half_width");
+            body.push.lateralTolerance = element.positive("lateral_tolerance");
+            body.push.angleTolerance = element.nonNegativeAngle("angle_tolerance", 0.0);
+            if (body.push.angleTolerance <= 0.0)
+                element.fail("angle_tolerance", "angle_tolerance must be given and > 0");
+        }
+
+        void PhysicsSceneParser::readGoal(const XmlElement &element)
+        {
+            ompl_mm::checkLeaf(element, {"xy", "radius"});
+            scene_.goal.centre = element.vector2("xy");
+            scene_.goal.radius = element.positive("radius");
+            scene_.goal.where = element.where();
+        }
+
+        void PhysicsSceneParser::checkPlacement(const XmlElement &robot, const XmlElement &goal) const
+        {
+            const Eigen::AlignedBox2d &region = scene_.limits.robotRegion;
+            if (region.isEmpty())
+                robot.fail("no robot region: give <limits robot_region=\"xmin xmax ymin ymax\">");
+            if (scene_.limits.bodyRegion.isEmpty())
+                robot.fail("no body region: give <limits body_region=\"xmin xmax ymin ymax\">");
+            if (!region.contains(scene_.robot.start.head<2>()))
+                robot.fail("start", "the robot starts outside its region (limits robot_region)");
+            if (!region.contains(scene_.goal.centre))
+                goal.fail("xy", "the goal centre is outside the robot region (limits robot_region)");
+        }
+
+        void PhysicsSceneParser::checkBodies() const
+        {
+            for (const PhysicsBody &body : scene_.bodies)
+                if (body.kind != BodyKind::Fixed &&
+                    !scene_.limits.bodyRegion.contains(body.start.translation().head<2>()))
+                    throw ompl_mm::InputError(
+                        body.where,
+                        "body '" + body.name + "' starts outside the body region (limits body_region)");
+        }
+    }  // namespace
+
+    PhysicsScene loadPhysicsScene(const std::string &path)
+    {
+        return parsePhysicsScene(ompl_mm::readInputFile(path, "scene file"), path);
+    }
+
+    PhysicsScene parsePhysicsScene(const std::string &xml, const std::string &sourceName)
+    {
+        tinyxml2::XMLDocument document;
+        return PhysicsSceneParser(sourceName)
+            .parse(ompl_mm::parseRootElement(document, xml, sourceName, "physics_scene"));
+    }
+}  // namespace ompl_phys

@@ -1,0 +1,336 @@
+#include "ompl_phys/world/PhysicsWorld.h"
+
+#include <ode/ode.h>
+#include <ompl/util/Exception.h>
+
+#include <algorithm>
+#include <array>
+#include <mutex>
+
+namespace ompl_phys
+{
+    namespace
+    {
+        /** Seed given to ODE's generator before every simulation from a written state. */
+        constexpr unsigned long ODE_SEED = 1;
+        /** Contacts are created this far before geometry touches; damps resting jitter, metres. */
+        constexpr double SURFACE_LAYER = 0.001;
+        /** Most contact points dCollide may return for one pair. */
+        constexpr int MAX_CONTACT_POINTS = 16;
+
+        void initialiseOde()
+        {
+            static std::once_flag once;
+            std::call_once(once, [] { dInitODE2(0); });
+        }
+
+        /** What a geom stands for, stored as the geom's data. */
+        struct GeomTag
+        {
+            enum class Kind
+            {
+                Floor,
+                Robot,
+                Body
+            };
+            Kind kind{Kind::Floor};
+            std::size_t sceneBody{0};  ///< for Kind::Body
+        };
+
+        dMatrix3 &toOde(const Eigen::Matrix3d &rotation, dMatrix3 &out)
+        {
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c)
+                    out[4 * r + c] = rotation(r, c);
+            for (int r = 0; r < 3; ++r)
+                out[4 * r + 3] = 0.0;
+            return out;
+        }
+    }  // namespace
+
+    /** ODE handles and the arrays ODE keeps pointers into (tags, convex data). */
+    struct PhysicsWorld::Handles
+    {
+        dWorldID world{nullptr};
+        dSpaceID space{nullptr};
+        dJointGroupID contacts{nullptr};
+        std::vector<dBodyID> bodies;  // moving bodies, robot first
+        std::vector<GeomTag> tags;    // reserved up front: geoms point into it
+        std::vector<std::array<double, 20>> prismPlanes;
+        std::vector<std::array<double, 18>> prismPoints;
+        std::vector<std::array<unsigned int, 23>> prismPolygons;
+
+        ~Handles()
+        {
+            if (contacts)
+                dJointGroupDestroy(contacts);
+            if (space)
+                dSpaceDestroy(space);  // destroys its geoms
+            if (world)
+                dWorldDestroy(world);  // destroys its bodies
+        }
+    };
+
+    namespace
+    {
+        /** A static convex prism: the triangle extruded along z, centred at the body frame. */
+        dGeomID createPrism(dSpaceID space, const PhysicsShape &shape, std::array<double, 20> &planes,
+                            std::array<double, 18> &points, std::array<unsigned int, 23> &polygons)
+        {
+            const double h = 0.5 * shape.length;
+            for (int i = 0; i < 3; ++i)
+            {
+                const Eigen::Vector2d c = shape.triangle.col(i);
+                points[3 * i] = points[9 + 3 * i] = c.x();
+                points[3 * i + 1] = points[9 + 3 * i + 1] = c.y();
+                points[3 * i + 2] = h;
+                points[9 + 3 * i + 2] = -h;
+                // side i runs from corner i to corner i+1; counter-clockwise corners put the outside on the
+                // right
+                const Eigen::Vector2d edge = shape.triangle.col((i + 1) % 3) - c;
+                const Eigen::Vector2d normal = Eigen::Vector2d(edge.y(), -edge.x()).normalized();
+                planes[4 * i] = normal.x();
+                planes[4 * i + 1] = normal.y();
+                planes[4 * i + 2] = 0.0;
+                planes[4 * i + 3] = normal.dot(c);
+            }
+            planes[12] = 0.0, planes[13] = 0.0, planes[14] = 1.0, planes[15] = h;
+            planes[16] = 0.0, planes[17] = 0.0, planes[18] = -1.0, planes[19] = h;
+            // faces in plane order (sides, top, bottom); top corners 0-2, bottom 3-5; each face
+            // counter-clockwise seen from outside
+            polygons = {4, 3, 4, 1, 0, 4, 4, 5, 2, 1, 4, 5, 3, 0, 2, 3, 0, 1, 2, 3, 5, 4, 3};
+            return dCreateConvex(space, planes.data(), 5, points.data(), 6, polygons.data());
+        }
+
+        dGeomID createGeom(dSpaceID space, const PhysicsShape &shape)
+        {
+            switch (shape.kind)
+            {
+                case PhysicsShape::Kind::Box:
+                    return dCreateBox(space, shape.boxSize.x(), shape.boxSize.y(), shape.boxSize.z());
+                case PhysicsShape::Kind::Cylinder:
+                    return dCreateCylinder(space, shape.radius, shape.length);
+                case PhysicsShape::Kind::Sphere:
+                case PhysicsShape::Kind::Prism:
+                    break;
+            }
+            return dCreateSphere(space, shape.radius);
+        }
+
+        void setMass(dBodyID body, const PhysicsShape &shape, double mass)
+        {
+            dMass m;
+            switch (shape.kind)
+            {
+                case PhysicsShape::Kind::Box:
+                    dMassSetBoxTotal(&m, mass, shape.boxSize.x(), shape.boxSize.y(), shape.boxSize.z());
+                    break;
+                case PhysicsShape::Kind::Cylinder:
+                    dMassSetCylinderTotal(&m, mass, 3, shape.radius, shape.length);
+                    break;
+                case PhysicsShape::Kind::Sphere:
+                case PhysicsShape::Kind::Prism:
+                    dMassSetSphereTotal(&m, mass, shape.radius);
+                    break;
+            }
+            dBodySetMass(body, &m);
+        }
+
+        void placeGeom(dGeomID geom, const Eigen::Isometry3d &pose)
+        {
+            dMatrix3 rotation;
+            dGeomSetPosition(geom, pose.translation().x(), pose.translation().y(), pose.translation().z());
+            dGeomSetRotation(geom, toOde(pose.linear(), rotation));
+        }
+    }  // namespace
+
+    PhysicsWorld::PhysicsWorld(const PhysicsScene &scene)
+        : scene_(scene), handles_(std::make_unique<Handles>())
+    {
+        initialiseOde();
+        movable_ = scene_.movableBodies();
+        Handles &h = *handles_;
+        h.world = dWorldCreate();
+        h.space = dSimpleSpaceCreate(nullptr);  // few geoms; a fixed visiting order keeps runs identical
+        h.contacts = dJointGroupCreate(0);
+        dWorldSetGravity(h.world, 0.0, 0.0, scene_.contact.gravity);
+        dWorldSetQuickStepNumIterations(h.world, static_cast<int>(scene_.contact.iterations));
+        dWorldSetContactSurfaceLayer(h.world, SURFACE_LAYER);
+        dWorldSetAutoDisableFlag(h.world, 0);
+
+        h.tags.reserve(2 + scene_.bodies.size());
+        h.prismPlanes.reserve(scene_.bodies.size());
+        h.prismPoints.reserve(scene_.bodies.size());
+        h.prismPolygons.reserve(scene_.bodies.size());
+        h.tags.push_back({GeomTag::Kind::Floor, 0});
+        dGeomSetData(dCreatePlane(h.space, 0.0, 0.0, 1.0, 0.0), &h.tags.back());
+
+        dBodyID robot = dBodyCreate(h.world);
+        dMass robotMass;
+        dMassSetSphereTotal(&robotMass, scene_.robot.mass, scene_.robot.radius);
+        dBodySetMass(robot, &robotMass);
+        dGeomID robotGeom = dCreateSphere(h.space, scene_.robot.radius);
+        dGeomSetBody(robotGeom, robot);
+        h.tags.push_back({GeomTag::Kind::Robot, 0});
+        dGeomSetData(robotGeom, &h.tags.back());
+        h.bodies.push_back(robot);
+
+        for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
+        {
+            const PhysicsBody &body = scene_.bodies[i];
+            const bool prism = body.shape.kind == PhysicsShape::Kind::Prism;
+            if (prism && body.kind != BodyKind::Fixed)
+                throw ompl::Exception("PhysicsWorld",
+                                      "body '" + body.name + "': a prism can only be a fixed body");
+            dGeomID geom = nullptr;
+            if (prism)
+            {
+                h.prismPlanes.emplace_back();
+                h.prismPoints.emplace_back();
+                h.prismPolygons.emplace_back();
+                geom = createPrism(h.space, body.shape, h.prismPlanes.back(), h.prismPoints.back(),
+                                   h.prismPolygons.back());
+            }
+            else
+                geom = createGeom(h.space, body.shape);
+            h.tags.push_back({GeomTag::Kind::Body, i});
+            dGeomSetData(geom, &h.tags.back());
+            if (body.kind == BodyKind::Fixed)
+            {
+                placeGeom(geom, body.start);
+                continue;
+            }
+            dBodyID dynamic = dBodyCreate(h.world);
+            setMass(dynamic, body.shape, body.mass);
+            dGeomSetBody(geom, dynamic);
+            h.bodies.push_back(dynamic);
+        }
+        setStates(startStates());
+    }
+
+    PhysicsWorld::~PhysicsWorld() = default;
+
+    const std::string &PhysicsWorld::movingBodyName(std::size_t movingIndex) const
+    {
+        return movingIndex == 0 ? scene_.robot.name : scene_.bodies[sceneBodyOf(movingIndex)].name;
+    }
+
+    BodyStates PhysicsWorld::startStates() const
+    {
+        BodyStates states(movingBodyCount());
+        states[0].position = scene_.robot.start;
+        for (std::size_t i = 1; i < states.size(); ++i)
+        {
+            const Eigen::Isometry3d &start = scene_.bodies[sceneBodyOf(i)].start;
+            states[i].position = start.translation();
+            states[i].orientation = Eigen::Quaterniond(start.linear());
+        }
+        return states;
+    }
+
+    void PhysicsWorld::setStates(const BodyStates &states)
+    {
+        for (std::size_t i = 0; i < handles_->bodies.size(); ++i)
+        {
+            dBodyID body = handles_->bodies[i];
+            const BodyState &s = states[i];
+            dBodySetPosition(body, s.position.x(), s.position.y(), s.position.z());
+            const dQuaternion q = {s.orientation.w(), s.orientation.x(), s.orientation.y(),
+                                   s.orientation.z()};
+            dBodySetQuaternion(body, q);
+            dBodySetLinearVel(body, s.linearVelocity.x(), s.linearVelocity.y(), s.linearVelocity.z());
+            dBodySetAngularVel(body, s.angularVelocity.x(), s.angularVelocity.y(), s.angularVelocity.z());
+            dBodySetForce(body, 0.0, 0.0, 0.0);
+            dBodySetTorque(body, 0.0, 0.0, 0.0);
+        }
+    }
+
+    void PhysicsWorld::readStates(BodyStates &states) const
+    {
+        states.resize(handles_->bodies.size());
+        for (std::size_t i = 0; i < handles_->bodies.size(); ++i)
+        {
+            dBodyID body = handles_->bodies[i];
+            const dReal *p = dBodyGetPosition(body);
+            const dReal *q = dBodyGetQuaternion(body);
+            const dReal *v = dBodyGetLinearVel(body);
+            const dReal *w = dBodyGetAngularVel(body);
+            states[i].position = Eigen::Vector3d(p[0], p[1], p[2]);
+            states[i].orientation = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+            states[i].linearVelocity = Eigen::Vector3d(v[0], v[1], v[2]);
+            states[i].angularVelocity = Eigen::Vector3d(w[0], w[1], w[2]);
+        }
+    }
+
+    void PhysicsWorld::step(const Eigen::Vector2d &force, double dt)
+    {
+        dBodyAddForce(handles_->bodies[0], force.x(), force.y(), 0.0);
+        createContacts_ = true;
+        collide();
+        dWorldQuickStep(handles_->world, dt);
+        dJointGroupEmpty(handles_->contacts);
+    }
+
+    double PhysicsWorld::detectContacts()
+    {
+        createContacts_ = false;
+        collide();
+        return deepest_;
+    }
+
+    void PhysicsWorld::resetRandomSeed()
+    {
+        dRandSetSeed(ODE_SEED);
+    }
+
+    void PhysicsWorld::collide()
+    {
+        touches_.clear();
+        deepest_ = 0.0;
+        dSpaceCollide(handles_->space, this,
+                      [](void *data, dGeomID a, dGeomID b)
+                      { static_cast<PhysicsWorld *>(data)->handlePair(a, b); });
+        std::sort(touches_.begin(), touches_.end());
+        touches_.erase(std::unique(touches_.begin(), touches_.end()), touches_.end());
+    }
+
+    void PhysicsWorld::handlePair(void *geomA, void *geomB)
+    {
+        auto a = static_cast<dGeomID>(geomA);
+        auto b = static_cast<dGeomID>(geomB);
+        dBodyID bodyA = dGeomGetBody(a);
+        dBodyID bodyB = dGeomGetBody(b);
+        if (!bodyA && !bodyB)
+            return;  // static geometry never moves
+        std::array<dContactGeom, MAX_CONTACT_POINTS> points;
+        const int count =
+            dCollide(a, b, static_cast<int>(scene_.contact.maxContacts), points.data(), sizeof(dContactGeom));
+        if (count == 0)
+            return;
+        const auto *tagA = static_cast<const GeomTag *>(dGeomGetData(a));
+        const auto *tagB = static_cast<const GeomTag *>(dGeomGetData(b));
+        if (tagA->kind == GeomTag::Kind::Robot && tagB->kind == GeomTag::Kind::Body)
+            touches_.push_back(tagB->sceneBody);
+        if (tagB->kind == GeomTag::Kind::Robot && tagA->kind == GeomTag::Kind::Body)
+            touches_.push_back(tagA->sceneBody);
+        for (int i = 0; i < count; ++i)
+            deepest_ = std::max(deepest_, points[i].depth);
+        if (!createContacts_)
+            return;
+
+        const bool robotOnFloor =
+            (tagA->kind == GeomTag::Kind::Robot && tagB->kind == GeomTag::Kind::Floor) ||
+            (tagB->kind == GeomTag::Kind::Robot && tagA->kind == GeomTag::Kind::Floor);
+        dContact contact{};
+        contact.surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
+        contact.surface.mu = robotOnFloor ? scene_.materials.robotFloor : scene_.materials.defaultMu;
+        contact.surface.soft_erp = scene_.contact.erp;
+        contact.surface.soft_cfm = scene_.contact.cfm;
+        for (int i = 0; i < count; ++i)
+        {
+            contact.geom = points[i];
+            dJointID joint = dJointCreateContact(handles_->world, handles_->contacts, &contact);
+            dJointAttach(joint, bodyA, bodyB);
+        }
+    }
+}  // namespace ompl_phys
