@@ -36,8 +36,8 @@ namespace ompl_phys
         /** The first broken rule among the robot's touches (scene body indices) in states. */
         Violation checkTouches(const std::vector<std::size_t> &touches, const BodyStates &states) const;
 
-        /** The first broken rule or limit of the states alone: finiteness, regions, speeds, and
-            constraint-oriented bodies on their axes. */
+        /** The first broken rule or limit of the states alone: finiteness, regions, the robot
+            overlapping a fixed body, speeds, and constraint-oriented bodies on their axes. */
         Violation checkStates(const BodyStates &states) const;
 
         /** Moving bodies (indices >= 1) whose footprint overlaps the robot standing anywhere in the
@@ -54,7 +54,16 @@ namespace ompl_phys
         void clearGoal(BodyStates &states, const Eigen::Vector2d &robotGoal, double clearance) const;
 
     private:
+        /** Where a fixed body stands on the floor. */
+        struct FixedFootprint
+        {
+            std::size_t body;
+            Eigen::Vector2d position;
+            double yaw;
+        };
+
         const PhysicsScene &scene_;
+        std::vector<FixedFootprint> fixed_;
         std::vector<std::size_t> movable_;
     };
 }  // namespace ompl_phys

@@ -1,13 +1,9 @@
 #include "ompl_phys/base/PhysicsStateSampler.h"
 
-#include <cmath>
-
 namespace ompl_phys
 {
     namespace
     {
-        constexpr double PI = 3.14159265358979323846;
-
         Eigen::Vector2d uniformIn(ompl::RNG &rng, const Eigen::AlignedBox2d &box)
         {
             return {rng.uniformReal(box.min().x(), box.max().x()),
@@ -31,26 +27,9 @@ namespace ompl_phys
             rng_.uniformReal(-limits.maxRobotSpeed, limits.maxRobotSpeed), 0.0;
         for (std::size_t i = 0; i < movable_.size(); ++i)
         {
-            const PhysicsBody &body = scene.bodies[movable_[i]];
-            BodyState &s = scratch_[i + 1];
-            const Eigen::Vector3d start = body.start.translation();
-            if (body.kind == BodyKind::Constrained)
-            {
-                // a point of the axis line through the start, inside the body region
-                const Eigen::Quaterniond orientation(body.start.linear());
-                const Eigen::Vector2d axis = (orientation * body.push.axis).head<2>().normalized();
-                const double reach = limits.bodyRegion.diagonal().norm();
-                Eigen::Vector2d at;
-                do
-                    at = start.head<2>() + rng_.uniformReal(-reach, reach) * axis;
-                while (!limits.bodyRegion.contains(at));
-                s.position << at, start.z();
-                s.orientation = orientation;
-                continue;
-            }
-            s.position << uniformIn(rng_, limits.bodyRegion), start.z();
-            s.orientation = Eigen::AngleAxisd(rng_.uniformReal(-PI, PI), Eigen::Vector3d::UnitZ()) *
-                            Eigen::Quaterniond(body.start.linear());
+            const Eigen::Isometry3d &start = scene.bodies[movable_[i]].start;
+            scratch_[i + 1].position = start.translation();
+            scratch_[i + 1].orientation = Eigen::Quaterniond(start.linear());
         }
         physics_.writeState(scratch_, state);
     }

@@ -26,6 +26,10 @@ namespace ompl_phys
     ManipulationKnowledge::ManipulationKnowledge(const PhysicsScene &scene, std::vector<std::size_t> movable)
         : scene_(scene), movable_(std::move(movable))
     {
+        for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+            if (scene.bodies[i].kind == BodyKind::Fixed)
+                fixed_.push_back({i, scene.bodies[i].start.translation().head<2>(),
+                                  yawOf(Eigen::Quaterniond(scene.bodies[i].start.linear()))});
     }
 
     bool ManipulationKnowledge::touchAllowed(std::size_t body, const Eigen::Vector3d &robotCentre,
@@ -68,6 +72,11 @@ namespace ompl_phys
         const BodyState &robot = states[0];
         if (!limits.robotRegion.contains(robot.position.head<2>()))
             return Violation::OutsideRegion;
+        // the robot inside a fixed body (a sampled state, never a simulated one: ODE pushes it out)
+        for (const FixedFootprint &f : fixed_)
+            if (footprintDistance(scene_.bodies[f.body].shape, f.position, f.yaw, robot.position.head<2>()) <
+                scene_.robot.radius)
+                return Violation::TouchedFixedBody;
         if (!withinSpeed(robot.linearVelocity, limits.maxRobotSpeed) ||
             !withinSpeed(robot.angularVelocity, limits.maxAngularSpeed))
             return Violation::TooFast;
