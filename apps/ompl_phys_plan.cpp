@@ -9,7 +9,9 @@
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
 
 #include <ompl/util/Console.h>
+
 #include <ompl/util/RandomNumbers.h>
+#include <algorithm>
 
 #include <iomanip>
 #include <iostream>
@@ -21,61 +23,31 @@ namespace
 {
     struct Options
     {
-        std::string scene;
-        std::string planner{"kpiece"};
-        long long seed{1};       ///< checked to be in [1, 2^32 - 1]
-        double timeLimit{-1.0};  ///< negative: the scene's
-        std::string json, svg;
-        bool verbose{false};
+        ompl_mm::apps::CommonOptions common{"kpiece"};
     };
 
     std::string plannerList()
     {
         std::string list;
         for (const std::string &name : ompl_phys::PhysicsSetup::plannerNames())
-            list += (list.empty() ? "" : "|") + name;
+            list += (list.empty() ? "" : ", ") + name;
         return list;
     }
 
-    /** Parses the command line; returns false when the program should exit with `exitCode`. */
     bool parseOptions(int argc, char **argv, Options &options, int &exitCode)
     {
-        po::options_description named("Options");
-        named.add_options()("help,h", "print this help and exit")(
-            "planner", po::value(&options.planner)->default_value("kpiece"),
-            ("control planner: " + plannerList()).c_str())("seed", po::value(&options.seed)->default_value(1),
-                                                           "random seed (positive)")(
-            "time-limit", po::value(&options.timeLimit),
-            "planning time limit in seconds (default: the scene's)")("json", po::value(&options.json),
-                                                                     "write the result as JSON to this file")(
-            "svg", po::value(&options.svg), "write a top-down picture of the plan to this SVG file")(
-            "verbose,v", po::bool_switch(&options.verbose), "print OMPL's informational messages");
-        po::options_description hidden;
-        hidden.add_options()("scene", po::value(&options.scene));
-        po::options_description all;
-        all.add(named).add(hidden);
-        po::positional_options_description positional;
-        positional.add("scene", 1);
-
-        po::variables_map vm;
-        po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
-        po::notify(vm);
-        if (vm.count("help") || options.scene.empty())
-        {
-            std::cout
-                << "Usage: ompl_phys_plan SCENE.xml [options]\n"
-                << "Plans a physics-based pushing task: a sphere robot driven by a planar force in an ODE\n"
-                << "world, with manipulation knowledge, using an OMPL control planner.\n"
-                << "Exit status: 0 solved, 1 not solved, 2 bad input.\n\n"
-                << named;
-            exitCode = vm.count("help") ? 0 : 2;
+        po::options_description none;
+        if (!ompl_mm::apps::parseCommandLine(
+                argc, argv,
+                "Usage: ompl_phys_plan SCENE.xml [options]\n"
+                "Plans a physics-based pushing task: a sphere robot driven by a planar force in an ODE\n"
+                "world, with manipulation knowledge, using an OMPL control planner.\n",
+                "control planner: " + plannerList(), none, options.common, exitCode))
             return false;
-        }
         const auto &names = ompl_phys::PhysicsSetup::plannerNames();
-        if (std::find(names.begin(), names.end(), options.planner) == names.end())
-            throw ompl_mm::InputError("unknown planner '" + options.planner + "' (known: " + plannerList() +
-                                      ")");
-        ompl_mm::apps::checkSeedAndTimeLimit(options.seed, vm.count("time-limit") > 0, options.timeLimit);
+        if (std::find(names.begin(), names.end(), options.common.planner) == names.end())
+            throw ompl_mm::InputError("unknown planner '" + options.common.planner +
+                                      "' (known: " + plannerList() + ")");
         return true;
     }
 
@@ -86,7 +58,7 @@ namespace
         const auto &counters = setup.propagator().counters();
         std::cout << std::fixed << std::setprecision(3) << "scene " << setup.scene().name << ": "
                   << (solved ? "solved" : "not solved") << " in " << setup.getLastPlanComputationTime()
-                  << " s (planner " << options.planner << ", seed " << options.seed << ")\n";
+                  << " s (planner " << options.common.planner << ", seed " << options.common.seed << ")\n";
         const auto occupants = setup.knowledge().goalOccupants(setup.world().startStates());
         for (std::size_t body : occupants)
             std::cout << "  goal occupied by " << setup.world().movingBodyName(body) << " at the start\n";
@@ -107,15 +79,15 @@ namespace
 
     int run(const Options &options)
     {
-        const ompl_phys::PhysicsScene scene = ompl_phys::loadPhysicsScene(options.scene);
-        ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.seed));
+        const ompl_phys::PhysicsScene scene = ompl_phys::loadPhysicsScene(options.common.scene);
+        ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         ompl_phys::PhysicsSetup setup(scene);
-        setup.setPlannerByName(options.planner);
+        setup.setPlannerByName(options.common.planner);
         // open the outputs first: a bad path should not cost a whole planning run
-        std::ofstream json = ompl_mm::apps::openOutput(options.json);
-        std::ofstream svg = ompl_mm::apps::openOutput(options.svg);
+        std::ofstream json = ompl_mm::apps::openOutput(options.common.json);
+        std::ofstream svg = ompl_mm::apps::openOutput(options.common.svg);
 
-        const double timeLimit = options.timeLimit > 0.0 ? options.timeLimit : scene.timeLimit;
+        const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
         setup.solve(timeLimit);
         const bool solved = setup.haveExactSolution();
         std::optional<ompl_phys::SimulatedPath> simulated;
@@ -129,28 +101,21 @@ namespace
         const ompl_phys::SimulatedPath *result = simulated ? &*simulated : nullptr;
         printSummary(setup, options, result);
         if (json.is_open())
-            ompl_phys::writePhysicsResultJson(
-                json, {scene.name, options.planner, static_cast<unsigned long>(options.seed), timeLimit},
-                setup, result);
+            ompl_phys::writePhysicsResultJson(json,
+                                              {scene.name, options.common.planner,
+                                               static_cast<unsigned long>(options.common.seed), timeLimit},
+                                              setup, result);
         if (svg.is_open())
-            ompl_phys::writePhysicsSceneSvg(
-                svg, setup, result,
-                scene.name + " · " + options.planner + " · seed " + std::to_string(options.seed));
+            ompl_phys::writePhysicsSceneSvg(svg, setup, result,
+                                            scene.name + " · " + options.common.planner + " · seed " +
+                                                std::to_string(options.common.seed));
         return solved ? 0 : 1;
     }
 }  // namespace
 
 int main(int argc, char **argv)
 {
-    return ompl_mm::apps::runApp(
+    return ompl_mm::apps::runApp<Options>(
         "ompl_phys_plan",
-        [&]
-        {
-            Options options;
-            int exitCode = 0;
-            if (!parseOptions(argc, argv, options, exitCode))
-                return exitCode;
-            ompl::msg::setLogLevel(options.verbose ? ompl::msg::LOG_INFO : ompl::msg::LOG_WARN);
-            return run(options);
-        });
+        [&](Options &options, int &exitCode) { return parseOptions(argc, argv, options, exitCode); }, run);
 }

@@ -1,9 +1,12 @@
-/* What the command-line apps share: checked seeds and time limits, output files opened before
-   planning, and the mapping of failures to exit codes (2 for bad input, with the message on
-   stderr prefixed by the app's name). */
+/* What the command-line apps share: the common options (scene, --planner, --seed, --time-limit,
+   --json, --svg, --verbose) with their checks, output files opened before planning, and the
+   mapping of failures to exit codes (2 for bad input, with the message on stderr prefixed by the
+   app's name). */
 #pragma once
 
 #include "ompl_mm/scene/InputError.h"
+
+#include <ompl/util/Console.h>
 
 #include <boost/program_options.hpp>
 
@@ -11,9 +14,23 @@
 #include <functional>
 #include <iostream>
 #include <string>
+#include <utility>
 
 namespace ompl_mm::apps
 {
+    /** The options every planning app has. */
+    struct CommonOptions
+    {
+        explicit CommonOptions(std::string defaultPlanner) : planner(std::move(defaultPlanner)) {}
+
+        std::string scene;
+        std::string planner;
+        long long seed{1};       ///< checked to be in [1, 2^32 - 1]
+        double timeLimit{-1.0};  ///< seconds; negative: the scene's
+        std::string json, svg;
+        bool verbose{false};
+    };
+
     /** @throws InputError unless seed is in [1, 2^32 - 1] and a given time limit is positive. */
     inline void checkSeedAndTimeLimit(long long seed, bool timeLimitGiven, double timeLimit)
     {
@@ -21,6 +38,46 @@ namespace ompl_mm::apps
             throw InputError("--seed must be in [1, 4294967295], got " + std::to_string(seed));
         if (timeLimitGiven && !(timeLimit > 0.0))
             throw InputError("--time-limit must be positive");
+    }
+
+    /** Parses the command line into options (the app's own options are in extra, which also
+        receives the common ones for --help); usage is printed first by --help.
+        @returns false when the program should exit with exitCode (help shown: 0, no scene: 2).
+        @throws InputError for a bad seed or time limit; boost errors for malformed options. */
+    inline bool parseCommandLine(int argc, char **argv, const std::string &usage,
+                                 const std::string &plannerHelp,
+                                 boost::program_options::options_description &extra, CommonOptions &options,
+                                 int &exitCode)
+    {
+        namespace po = boost::program_options;
+        po::options_description named("Options");
+        named.add_options()("help,h", "print this help and exit")(
+            "planner", po::value(&options.planner)->default_value(options.planner), plannerHelp.c_str())(
+            "seed", po::value(&options.seed)->default_value(1), "random seed (positive)")(
+            "time-limit", po::value(&options.timeLimit),
+            "planning time limit in seconds (default: the scene's)")("json", po::value(&options.json),
+                                                                     "write the result as JSON to this file")(
+            "svg", po::value(&options.svg), "write a top-down picture of the plan to this SVG file")(
+            "verbose,v", po::bool_switch(&options.verbose), "print OMPL's informational messages");
+        named.add(extra);
+        po::options_description hidden;
+        hidden.add_options()("scene", po::value(&options.scene));
+        po::options_description all;
+        all.add(named).add(hidden);
+        po::positional_options_description positional;
+        positional.add("scene", 1);
+
+        po::variables_map vm;
+        po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
+        po::notify(vm);
+        if (vm.count("help") || options.scene.empty())
+        {
+            std::cout << usage << "Exit status: 0 solved, 1 not solved, 2 bad input.\n\n" << named;
+            exitCode = vm.count("help") ? 0 : 2;
+            return false;
+        }
+        checkSeedAndTimeLimit(options.seed, vm.count("time-limit") > 0, options.timeLimit);
+        return true;
     }
 
     /** An output file, or a closed stream for an empty path. @throws InputError when it cannot be written. */
@@ -35,12 +92,20 @@ namespace ompl_mm::apps
         return out;
     }
 
-    /** Runs body and turns bad command lines and bad input into exit code 2 with a message. */
-    inline int runApp(const char *name, const std::function<int()> &body)
+    /** Parses the command line with parse (false: exit with its code), sets OMPL's log level and
+        runs; turns bad command lines and bad input into exit code 2 with a message. */
+    template <typename Options>
+    int runApp(const char *name, const std::function<bool(Options &, int &)> &parse,
+               const std::function<int(const Options &)> &run)
     {
         try
         {
-            return body();
+            Options options;
+            int exitCode = 0;
+            if (!parse(options, exitCode))
+                return exitCode;
+            ompl::msg::setLogLevel(options.common.verbose ? ompl::msg::LOG_INFO : ompl::msg::LOG_WARN);
+            return run(options);
         }
         catch (const boost::program_options::error &e)
         {

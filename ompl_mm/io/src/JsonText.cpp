@@ -1,5 +1,7 @@
 #include "ompl_mm/io/JsonText.h"
 
+#include "ompl_mm/io/ResultJson.h"
+
 #include <iomanip>
 #include <sstream>
 
@@ -21,5 +23,18 @@ namespace ompl_mm
         }
         out << '"';
         return out.str();
+    }
+
+    void writeRunHeader(std::ostream &out, const RunDescription &run, bool solved, const std::string &status,
+                        double time)
+    {
+        out << std::setprecision(10) << "{\n"
+            << "  \"scene\": " << jsonQuoted(run.scene) << ",\n"
+            << "  \"planner\": " << jsonQuoted(run.planner) << ",\n"
+            << "  \"seed\": " << run.seed << ",\n"
+            << "  \"time_limit_s\": " << run.timeLimit << ",\n"
+            << "  \"solved\": " << (solved ? "true" : "false") << ",\n"
+            << "  \"status\": " << jsonQuoted(status) << ",\n"
+            << "  \"time_s\": " << time << ",\n";
     }
 }  // namespace ompl_mm

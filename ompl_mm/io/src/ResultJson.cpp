@@ -31,15 +31,9 @@ namespace ompl_mm
         const MOPL &planner = *setup.mopl();
         ompl::base::PlannerData data(setup.getSpaceInformation());
         planner.getPlannerData(data);
-        out << std::setprecision(10) << "{\n"
-            << "  \"scene\": " << jsonQuoted(run.scene) << ",\n"
-            << "  \"planner\": " << jsonQuoted(run.planner) << ",\n"
-            << "  \"seed\": " << run.seed << ",\n"
-            << "  \"time_limit_s\": " << run.timeLimit << ",\n"
-            << "  \"solved\": " << (solved ? "true" : "false") << ",\n"
-            << "  \"status\": " << jsonQuoted(setup.getLastPlannerStatus().asString()) << ",\n"
-            << "  \"time_s\": " << setup.getLastPlanComputationTime() << ",\n"
-            << "  \"tree_vertices\": " << data.numVertices() << ",\n"
+        writeRunHeader(out, run, solved, setup.getLastPlannerStatus().asString(),
+                       setup.getLastPlanComputationTime());
+        out << "  \"tree_vertices\": " << data.numVertices() << ",\n"
             << "  \"tree_edges\": " << data.numEdges() << ",\n";
         writeStats(out, planner.statistics());
         if (solved)

@@ -35,6 +35,15 @@ namespace ompl_phys
             return controls;
         }
 
+        /** A planner of type P with the given goal bias. */
+        template <typename P>
+        ompl::base::PlannerPtr withGoalBias(const oc::SpaceInformationPtr &si, double bias)
+        {
+            auto planner = std::make_shared<P>(si);
+            planner->setGoalBias(bias);
+            return planner;
+        }
+
         std::string joinNames(const std::vector<std::string> &names)
         {
             std::string joined;
@@ -116,45 +125,23 @@ namespace ompl_phys
     void PhysicsSetup::setPlannerByName(const std::string &name)
     {
         const double bias = world_->scene().limits.goalBias;
-        ompl::base::PlannerPtr planner;
         if (name == "rrt")
-        {
-            auto rrt = std::make_shared<oc::RRT>(si_);
-            rrt->setGoalBias(bias);
-            planner = rrt;
-        }
+            setPlanner(withGoalBias<oc::RRT>(si_, bias));
         else if (name == "est")
-        {
-            auto est = std::make_shared<oc::EST>(si_);
-            est->setGoalBias(bias);
-            planner = est;
-        }
+            setPlanner(withGoalBias<oc::EST>(si_, bias));
         else if (name == "kpiece")
-        {
-            auto kpiece = std::make_shared<oc::KPIECE1>(si_);
-            kpiece->setGoalBias(bias);
-            planner = kpiece;
-        }
+            setPlanner(withGoalBias<oc::KPIECE1>(si_, bias));
         else if (name == "sycloprrt")
-            planner = std::make_shared<oc::SyclopRRT>(si_, decomposition_);
+            setPlanner(std::make_shared<oc::SyclopRRT>(si_, decomposition_));
         else if (name == "syclopest")
-            planner = std::make_shared<oc::SyclopEST>(si_, decomposition_);
+            setPlanner(std::make_shared<oc::SyclopEST>(si_, decomposition_));
         else if (name == "pdst")
-        {
-            auto pdst = std::make_shared<oc::PDST>(si_);
-            pdst->setGoalBias(bias);
-            planner = pdst;
-        }
+            setPlanner(withGoalBias<oc::PDST>(si_, bias));
         else if (name == "sst")
-        {
-            auto sst = std::make_shared<oc::SST>(si_);
-            sst->setGoalBias(bias);
-            planner = sst;
-        }
+            setPlanner(withGoalBias<oc::SST>(si_, bias));
         else
             throw ompl::Exception("PhysicsSetup", "unknown planner '" + name + "', expected one of " +
                                                       joinNames(plannerNames()));
-        setPlanner(planner);
     }
 
     bool PhysicsSetup::haveExactSolution() const

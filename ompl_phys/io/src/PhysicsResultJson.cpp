@@ -33,15 +33,9 @@ namespace ompl_phys
                                 const PhysicsSetup &setup, const SimulatedPath *simulated)
     {
         const bool solved = setup.haveExactSolution();
-        out << std::setprecision(10) << "{\n"
-            << "  \"scene\": " << jsonQuoted(run.scene) << ",\n"
-            << "  \"planner\": " << jsonQuoted(run.planner) << ",\n"
-            << "  \"seed\": " << run.seed << ",\n"
-            << "  \"time_limit_s\": " << run.timeLimit << ",\n"
-            << "  \"solved\": " << (solved ? "true" : "false") << ",\n"
-            << "  \"status\": " << jsonQuoted(setup.getLastPlannerStatus().asString()) << ",\n"
-            << "  \"time_s\": " << setup.getLastPlanComputationTime() << ",\n"
-            << "  \"goal_occupied_by\": [";
+        ompl_mm::writeRunHeader(out, run, solved, setup.getLastPlannerStatus().asString(),
+                                setup.getLastPlanComputationTime());
+        out << "  \"goal_occupied_by\": [";
         const std::vector<std::size_t> occupants =
             setup.knowledge().goalOccupants(setup.world().startStates());
         for (std::size_t i = 0; i < occupants.size(); ++i)

@@ -82,22 +82,26 @@ namespace ompl_phys
             return world;
         }
 
-        void polygon(std::ostream &out, const Canvas &canvas, const std::vector<Eigen::Vector2d> &points,
-                     const std::string &style)
+        /** A <polygon> or <polyline> through the floor points. */
+        void pointList(std::ostream &out, const char *tag, const Canvas &canvas,
+                       const std::vector<Eigen::Vector2d> &points, const std::string &style)
         {
-            out << "<polygon points=\"";
+            out << '<' << tag << " points=\"";
             for (const Eigen::Vector2d &p : points)
                 out << canvas.point(p) << ' ';
             out << "\" " << style << "/>\n";
         }
 
+        void polygon(std::ostream &out, const Canvas &canvas, const std::vector<Eigen::Vector2d> &points,
+                     const std::string &style)
+        {
+            pointList(out, "polygon", canvas, points, style);
+        }
+
         void polyline(std::ostream &out, const Canvas &canvas, const std::vector<Eigen::Vector2d> &points,
                       const std::string &style)
         {
-            out << "<polyline fill=\"none\" points=\"";
-            for (const Eigen::Vector2d &p : points)
-                out << canvas.point(p) << ' ';
-            out << "\" " << style << "/>\n";
+            pointList(out, "polyline", canvas, points, "fill=\"none\" " + style);
         }
 
         void circle(std::ostream &out, const Canvas &canvas, const Eigen::Vector2d &centre, double radius,
