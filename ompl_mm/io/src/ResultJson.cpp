@@ -1,6 +1,6 @@
 #include "ompl_mm/io/ResultJson.h"
 
-#include "ompl_mm/io/JsonText.h"
+#include "ompl_mm/io/TextFormat.h"
 
 #include <iomanip>
 

@@ -1,5 +1,7 @@
 #include "ompl_mm/io/SceneSvg.h"
 
+#include "ompl_mm/io/TextFormat.h"
+
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Exception.h>
 
@@ -119,21 +121,6 @@ namespace ompl_mm
             s << value;
             const std::string text = s.str();
             return text == "-0.00" ? "0.00" : text;
-        }
-
-        const std::pair<char, const char *> ENTITIES[] = {
-            {'&', "&amp;"}, {'<', "&lt;"}, {'>', "&gt;"}, {'"', "&quot;"}, {'\'', "&apos;"}};
-
-        std::string escape(const std::string &text)
-        {
-            std::string out;
-            for (char c : text)
-            {
-                const auto *entity = std::find_if(std::begin(ENTITIES), std::end(ENTITIES),
-                                                  [c](const auto &e) { return e.first == c; });
-                out += entity == std::end(ENTITIES) ? std::string(1, c) : std::string(entity->second);
-            }
-            return out;
         }
 
         const char *kindColour(PrimitiveKind kind)
@@ -389,7 +376,7 @@ namespace ompl_mm
         void writeFootprint(std::ostream &out, const Frame &frame, const Footprint &f,
                             const std::string &attributes, const std::string &name)
         {
-            const std::string title = name.empty() ? "" : "<title>" + escape(name) + "</title>";
+            const std::string title = name.empty() ? "" : "<title>" + xmlEscaped(name) + "</title>";
             if (f.corners.empty())
                 writeCircle(out, frame.map(f.centre), f.radius * frame.scale, attributes, title);
             else
@@ -401,7 +388,7 @@ namespace ompl_mm
                        const std::string &attributes)
         {
             out << "<text x=\"" << num(at.x()) << "\" y=\"" << num(at.y()) << "\" " << attributes << ">"
-                << escape(text) << "</text>\n";
+                << xmlEscaped(text) << "</text>\n";
         }
 
         void writeHeader(std::ostream &out, const Frame &frame)

@@ -1,6 +1,6 @@
 #include "ompl_phys/io/PhysicsResultJson.h"
 
-#include "ompl_mm/io/JsonText.h"
+#include "ompl_mm/io/TextFormat.h"
 
 #include <ompl/control/PlannerData.h>
 

@@ -1,4 +1,4 @@
-/* Pieces of JSON text for the result writers. */
+/* Pieces of JSON and XML (SVG) text for the result writers. */
 #pragma once
 
 #include <ostream>
@@ -10,6 +10,9 @@ namespace ompl_mm
 
     /** text as a JSON string literal, quotes included, with ", \ and control characters escaped. */
     std::string jsonQuoted(const std::string &text);
+
+    /** text with XML's special characters as entities (&amp; &lt; &gt; &quot; &apos;). */
+    std::string xmlEscaped(const std::string &text);
 
     /** Opens a result object with the keys every app writes: scene, planner, seed, time_limit_s,
         solved, status, time_s (each line ends with a comma, so more keys follow). */

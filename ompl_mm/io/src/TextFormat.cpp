@@ -1,9 +1,12 @@
-#include "ompl_mm/io/JsonText.h"
+#include "ompl_mm/io/TextFormat.h"
 
 #include "ompl_mm/io/ResultJson.h"
 
+#include <algorithm>
 #include <iomanip>
+#include <iterator>
 #include <sstream>
+#include <utility>
 
 namespace ompl_mm
 {
@@ -23,6 +26,20 @@ namespace ompl_mm
         }
         out << '"';
         return out.str();
+    }
+
+    std::string xmlEscaped(const std::string &text)
+    {
+        static const std::pair<char, const char *> ENTITIES[] = {
+            {'&', "&amp;"}, {'<', "&lt;"}, {'>', "&gt;"}, {'"', "&quot;"}, {'\'', "&apos;"}};
+        std::string out;
+        for (char c : text)
+        {
+            const auto *entity = std::find_if(std::begin(ENTITIES), std::end(ENTITIES),
+                                              [c](const auto &e) { return e.first == c; });
+            out += entity == std::end(ENTITIES) ? std::string(1, c) : std::string(entity->second);
+        }
+        return out;
     }
 
     void writeRunHeader(std::ostream &out, const RunDescription &run, bool solved, const std::string &status,
