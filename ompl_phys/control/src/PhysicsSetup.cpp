@@ -5,6 +5,7 @@
 #include "ompl_phys/base/PhysicsValidityChecker.h"
 #include "ompl_phys/base/RobotProjection.h"
 
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/control/planners/est/EST.h>
 #include <ompl/control/planners/kpiece/KPIECE1.h>
 #include <ompl/control/planners/pdst/PDST.h>
@@ -93,17 +94,18 @@ namespace ompl_phys
     {
         const PhysicsScene &s = world_->scene();
         const BodyStates start = world_->startStates();
-        const Violation violation = knowledge_->checkStates(start);
-        if (violation != Violation::None)
-            throw ompl_mm::InputError(s.robot.where,
-                                      std::string("the start breaks a rule: ") + violationName(violation));
         world_->setStates(start);
         const double depth = world_->detectContacts();
+        // touches first: their message names the body
         for (std::size_t body : world_->touches())
             if (knowledge_->checkTouches({body}, start) != Violation::None)
                 throw ompl_mm::InputError(
                     s.bodies[body].where,
                     "the robot starts touching '" + s.bodies[body].name + "', which it must not touch");
+        const Violation violation = knowledge_->checkStates(start);
+        if (violation != Violation::None)
+            throw ompl_mm::InputError(s.robot.where,
+                                      std::string("the start breaks a rule: ") + violationName(violation));
         if (depth > START_PENETRATION_TOLERANCE)
         {
             std::ostringstream message;
@@ -138,7 +140,14 @@ namespace ompl_phys
         else if (name == "pdst")
             setPlanner(withGoalBias<oc::PDST>(si_, bias));
         else if (name == "sst")
+        {
+            // SST optimises until its time is up unless its objective is satisfied: any solution is
+            // good enough here, as for the other planners
+            auto objective = std::make_shared<ompl::base::PathLengthOptimizationObjective>(si_);
+            objective->setCostThreshold(objective->infiniteCost());
+            pdef_->setOptimizationObjective(objective);
             setPlanner(withGoalBias<oc::SST>(si_, bias));
+        }
         else
             throw ompl::Exception("PhysicsSetup", "unknown planner '" + name + "', expected one of " +
                                                       joinNames(plannerNames()));

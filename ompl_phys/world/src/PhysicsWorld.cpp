@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <mutex>
 
 namespace ompl_phys
@@ -21,7 +22,12 @@ namespace ompl_phys
         void initialiseOde()
         {
             static std::once_flag once;
-            std::call_once(once, [] { dInitODE2(0); });
+            std::call_once(once,
+                           []
+                           {
+                               dInitODE2(0);
+                               std::atexit(dCloseODE);  // frees ODE's per-thread collision data
+                           });
         }
 
         /** What a geom stands for, stored as the geom's data. */

@@ -1,0 +1,240 @@
+#!/usr/bin/env bash
+# Tests for the ompl_phys_plan command-line contract: exit 0 solved, 1 not solved, 2 bad input naming
+# file:line; the JSON and SVG outputs; the same seed gives the same plan.
+# Usage: test_ompl_phys_plan.sh PATH/TO/ompl_phys_plan PHYSICS_SCENES_DIR SCRATCH_DIR
+# Prints "ok - name" / "not ok - name" per check and ends with "N passed, M failed".
+set -u
+
+if [ $# -ne 3 ]; then
+    echo "usage: $0 OMPL_PHYS_PLAN PHYSICS_SCENES_DIR SCRATCH_DIR" >&2
+    exit 2
+fi
+# absolute paths: the checks run from the scratch directory
+plan=$(realpath -- "$1")
+scenes=$(realpath -- "$2")
+scratch=$(realpath -m -- "$3")
+base=scene1.xml
+
+# every run is bounded, so a hang fails the check instead of the whole test
+run_limit=300
+
+passed=0
+failed=0
+ok() {
+    echo "ok - $1"
+    passed=$((passed + 1))
+}
+not_ok() {
+    echo "not ok - $1"
+    shift
+    local line
+    for line in "$@"; do
+        printf '%s\n' "$line" | sed 's/^/#   /'
+    done
+    failed=$((failed + 1))
+}
+
+# run NAME ARGS...: runs ompl_phys_plan with stdout/stderr in $scratch/NAME.{out,err}; sets $status
+run() {
+    local name=$1
+    shift
+    out=$scratch/$name.out
+    err=$scratch/$name.err
+    timeout "$run_limit" "$plan" "$@" >"$out" 2>"$err"
+    status=$?
+}
+
+# show the last command's output in a failure report
+outputs() {
+    echo "stdout: $(head -c 600 "$out")"
+    echo "stderr: $(head -c 600 "$err")"
+}
+
+# make_scene NAME: copies the base scene to $scratch/scenes/NAME.xml and prints the copy's path
+make_scene() {
+    cp "$scenes/$base" "$scratch/scenes/$1.xml" && echo "$scratch/scenes/$1.xml"
+}
+
+# edit FILE OLD NEW: replaces the one occurrence of OLD in FILE by NEW ("\n" in NEW is a newline)
+edit() {
+    python3 - "$@" <<'PY'
+import sys
+path, old, new = sys.argv[1], sys.argv[2], sys.argv[3].replace("\\n", "\n")
+text = open(path).read()
+if text.count(old) != 1:
+    sys.exit(f"edit: '{old}' occurs {text.count(old)} times in {path}, expected once")
+open(path, "w").write(text.replace(old, new))
+PY
+}
+
+# line_of FILE TEXT: the number of the first line of FILE containing TEXT
+line_of() {
+    grep -n -F -- "$2" "$1" | head -n 1 | cut -d: -f1
+}
+
+# expect_bad NAME SCENE LINE TEXT ARGS...: ompl_phys_plan exits 2 and stderr names "scene:LINE:"
+# (LINE "-": just the scene's file name) and contains TEXT; ARGS are passed after SCENE
+expect_bad() {
+    local name=$1 scene=$2 line=$3 text=$4
+    shift 4
+    if [ -z "$line" ]; then
+        not_ok "bad input: $name" "could not generate the scene $scene (edit failed)"
+        return
+    fi
+    run bad "$scene" --time-limit 2 "$@"
+    local where
+    where=$(basename "$scene")
+    [ "$line" != "-" ] && where="$where:$line:"
+    if [ $status -ne 2 ]; then
+        not_ok "bad input: $name" "command: $plan $scene --time-limit 2 $*" "expected exit 2, got $status" "$(outputs)"
+    elif ! grep -q -F -- "$where" "$err"; then
+        not_ok "bad input: $name" "command: $plan $scene --time-limit 2 $*" "stderr does not name '$where'" "$(outputs)"
+    elif ! grep -q -i -F -- "$text" "$err"; then
+        not_ok "bad input: $name" "command: $plan $scene --time-limit 2 $*" "stderr does not mention '$text'" "$(outputs)"
+    else
+        ok "bad input: $name"
+    fi
+}
+
+# expect_bad_option NAME TEXT ARGS...: a bad command line exits 2 with TEXT on stderr
+expect_bad_option() {
+    local name=$1 text=$2
+    shift 2
+    run bad "$@"
+    if [ $status -ne 2 ]; then
+        not_ok "bad input: $name" "command: $plan $*" "expected exit 2, got $status" "$(outputs)"
+    elif ! grep -q -F -- "$text" "$err"; then
+        not_ok "bad input: $name" "command: $plan $*" "stderr does not mention '$text'" "$(outputs)"
+    else
+        ok "bad input: $name"
+    fi
+}
+
+rm -rf "$scratch"
+mkdir -p "$scratch/scenes" || exit 2
+cd "$scratch" || exit 2
+scene=$scenes/$base
+
+# --- 1. help and usage -----------------------------------------------------------------------------
+run help --help
+missing=""
+for word in --planner --seed --time-limit --json --svg rrt est kpiece sycloprrt syclopest; do
+    grep -q -w -F -- "$word" "$out" || missing="$missing $word"
+done
+if [ $status -eq 0 ] && [ -z "$missing" ]; then
+    ok "--help exits 0 and lists the options and planners"
+else
+    not_ok "--help exits 0 and lists the options and planners" "exit $status; not mentioned:$missing" "$(outputs)"
+fi
+
+run noscene
+if [ $status -eq 2 ]; then
+    ok "no scene argument: exit 2"
+else
+    not_ok "no scene argument: exit 2" "expected exit 2, got $status" "$(outputs)"
+fi
+
+# --- 2. a solved run and its outputs ------------------------------------------------------------
+json1=$scratch/solved1.json
+svg=$scratch/solved.svg
+run solve1 "$scene" --planner kpiece --seed 1 --time-limit 60 --json "$json1" --svg "$svg"
+if [ $status -eq 0 ]; then
+    ok "solves $base with kpiece, --seed 1: exit 0"
+else
+    not_ok "solves $base with kpiece, --seed 1: exit 0" \
+        "command: $plan $scene --planner kpiece --seed 1 --time-limit 60 --json $json1 --svg $svg" \
+        "expected exit 0, got $status" "$(outputs)"
+fi
+
+if report=$(python3 - "$json1" 2>&1 <<'PY'
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+for key in ["scene", "planner", "seed", "solved", "time_s", "stats", "action", "power", "smoothness", "reaches_goal"]:
+    assert key in d, f"key '{key}' missing"
+assert d["scene"] == "scene1", f"scene is {d['scene']!r}"
+assert d["planner"] == "kpiece", f"planner is {d['planner']!r}"
+assert d["seed"] == 1, f"seed is {d['seed']!r}"
+assert d["solved"] is True, f"solved is {d['solved']!r}"
+assert d["reaches_goal"] is True, f"reaches_goal is {d['reaches_goal']!r}"
+assert isinstance(d["time_s"], (int, float)) and 0 <= d["time_s"] < math.inf, f"time_s is {d['time_s']!r}"
+stats = d["stats"]
+assert isinstance(stats, dict), "stats is not an object"
+for key in ["propagations", "substeps"]:
+    assert isinstance(stats.get(key), int) and stats[key] > 0, f"stats.{key} is {stats.get(key)!r}"
+assert stats["substeps"] >= stats["propagations"], "fewer ODE sub-steps than propagations"
+for key in ["action", "power", "smoothness"]:
+    assert isinstance(d[key], (int, float)) and math.isfinite(d[key]), f"{key} is {d[key]!r}"
+assert d["action"] > 0 and d["smoothness"] >= 0, f"action {d['action']}, smoothness {d['smoothness']}"
+PY
+); then
+    ok "JSON result is valid and complete"
+else
+    not_ok "JSON result is valid and complete" "$report" "json: $(head -c 800 "$json1" 2>/dev/null)"
+fi
+
+if report=$(python3 - "$svg" 2>&1 <<'PY'
+import sys
+import xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+assert root.tag in ("svg", "{http://www.w3.org/2000/svg}svg"), f"root element is <{root.tag}>"
+PY
+); then
+    ok "SVG is well-formed XML with an <svg> root"
+else
+    not_ok "SVG is well-formed XML with an <svg> root" "$report"
+fi
+
+# --- 3. determinism --------------------------------------------------------------------------------
+json2=$scratch/solved2.json
+run solve2 "$scene" --planner kpiece --seed 1 --time-limit 60 --json "$json2"
+if report=$(python3 - "$json1" "$json2" 2>&1 <<'PY'
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+for key in ["action", "power", "smoothness", "moves", "steps", "reaches_goal"]:
+    assert key in a and key in b, f"key '{key}' missing"
+    assert a[key] == b[key], f"{key}: {a[key]!r} then {b[key]!r}"
+PY
+) && [ $status -eq 0 ]; then
+    ok "same seed twice gives identical action, power and smoothness"
+else
+    not_ok "same seed twice gives identical action, power and smoothness" "second run exit $status" "$report"
+fi
+
+# --- 4. not solved -----------------------------------------------------------------------------------
+unsolved_json=$scratch/unsolved.json
+run unsolved "$scenes/scene2.xml" --time-limit 0.01 --json "$unsolved_json"
+if [ $status -eq 1 ] && python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d["solved"] is False else 1)' "$unsolved_json" 2>/dev/null; then
+    ok "scene2.xml with --time-limit 0.01: exit 1 and JSON solved false"
+else
+    not_ok "scene2.xml with --time-limit 0.01: exit 1 and JSON solved false" \
+        "command: $plan $scenes/scene2.xml --time-limit 0.01 --json $unsolved_json" \
+        "expected exit 1, got $status" "json: $(head -c 300 "$unsolved_json" 2>/dev/null)" "$(outputs)"
+fi
+
+# --- 5. bad input ------------------------------------------------------------------------------------
+expect_bad "missing scene file" "$scratch/scenes/no_such_scene.xml" - "not found"
+
+f=$(make_scene malformed_xml)
+edit "$f" '<goal xy="0.92 -1.0" radius="0.05"/>' '<goal xy="0.92 -1.0" radius="0.05">'
+# the unclosed element's line
+expect_bad "malformed XML" "$f" "$(line_of "$f" '<goal xy=')" "XML"
+
+f=$(make_scene unknown_element)
+edit "$f" '  <floor size="2.98 2.98"/>' '  <carpet colour="red"/>\n  <floor size="2.98 2.98"/>'
+expect_bad "unknown element" "$f" "$(line_of "$f" '<carpet')" "carpet"
+
+f=$(make_scene out_of_range)
+edit "$f" 'erp="0.5"' 'erp="2"'
+expect_bad "out-of-range parameter" "$f" "$(line_of "$f" 'erp="2"')" "erp"
+
+f=$(make_scene start_in_wall)
+edit "$f" 'start="-0.84 0.97"' 'start="0 0.5"'
+expect_bad "start inside a fixed wall" "$f" "$(line_of "$f" 'name="wall4"')" "starts touching 'wall4'"
+
+expect_bad_option "--planner foo" "foo" "$scene" --planner foo
+expect_bad_option "--seed 0" "--seed" "$scene" --seed 0
+expect_bad_option "--time-limit -1" "--time-limit" "$scene" --time-limit -1
+expect_bad_option "unwritable --json path" "/nonexistent/dir/x.json" "$scene" --time-limit 1 --json /nonexistent/dir/x.json
+
+echo "$passed passed, $failed failed"
+[ $failed -eq 0 ]
