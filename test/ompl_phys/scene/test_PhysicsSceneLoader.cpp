@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 using namespace ompl_phys;
@@ -29,11 +28,14 @@ namespace
     }
 
     /** How often pattern occurs in text: an independent count of what the file declares. */
-    std::size_t occurrences(const std::string &text, const std::string &pattern)
+    /** How often needle occurs in text (non-overlapping). */
+    std::size_t occurrences(const std::string &text, const std::string &needle)
     {
-        const std::regex re(pattern);
-        return static_cast<std::size_t>(
-            std::distance(std::sregex_iterator(text.begin(), text.end(), re), std::sregex_iterator()));
+        std::size_t count = 0;
+        for (std::size_t at = text.find(needle); at != std::string::npos;
+             at = text.find(needle, at + needle.size()))
+            ++count;
+        return count;
     }
 
     std::size_t countKind(const PhysicsScene &scene, BodyKind kind)
