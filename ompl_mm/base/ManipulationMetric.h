@@ -61,6 +61,7 @@ namespace ompl_mm
         struct Query
         {
             MetricPoint point;
+            std::vector<double> toolToObjects;  ///< squared distances from point.tool to point.objects
             std::vector<char> objectDefined;
             bool robotDefined{true};
             bool sampleIsTarget{true};  ///< the sample is `to` (forward tree) or `from` (backward tree)
@@ -96,25 +97,27 @@ namespace ompl_mm
         double distance(const MetricPoint &vertex, const Query &query, const ObjectCost &objectCost,
                         double cutoff = std::numeric_limits<double>::infinity()) const;
 
-        /** Doubles in a packed robot part: tool point (3), tool rotation (4: x y z w), joints. */
-        std::size_t packedRobotSize() const { return 7 + space_->robotDimension(); }
-        /** Writes the robot part of point, packed, to out (packedRobotSize() doubles): trees keep
-            these contiguous, so a scan touches little memory. */
-        void packRobot(const MetricPoint &point, double *out) const;
+        /** Doubles in a packed vertex: tool point (3), tool rotation (4: x y z w), joints, then the
+            squared distance from the tool to each object. */
+        std::size_t packedVertexSize() const { return 7 + space_->robotDimension() + space_->objectCount(); }
+        /** Writes the robot part of point and its tool's squared distances to the objects of
+            `objects`, packed, to out (packedVertexSize() doubles): trees keep these contiguous, so a
+            scan touches little memory and needs no object geometry of its own. */
+        void packVertex(const MetricPoint &point, const MetricPoint &objects, double *out) const;
         /** The greedy visit of the moving objects depends on a vertex only through its first
             object (the one nearest to its tool); per object i visited first: the cost of the legs
-            after it and where the tool is after the last object. Shared by vertices with the same
-            objects; filled on first use. */
+            after it and the object visited last. Shared by vertices with the same objects; each
+            visit is planned on first use. */
         struct LegPlan
         {
-            bool ready{false};
+            std::uint64_t planned{0};  ///< bit i: the visit starting at object i is planned
             std::vector<double> legsAfter;
-            std::vector<Eigen::Vector3d> lastEnd;
+            std::vector<int> last;
         };
 
-        /** As distance() for a vertex given by its packed robot part and a point with its objects;
-            plan (reset for each query and object configuration) saves work across such vertices. */
-        double distance(const double *packedRobot, const MetricPoint &objects, const Query &query,
+        /** As distance() for a vertex packed (packVertex) with `objects`; plan (planned = 0 for
+            each query and object configuration) saves work across such vertices. */
+        double distance(const double *packedVertex, const MetricPoint &objects, const Query &query,
                         const ObjectCost &objectCost, double cutoff, LegPlan &plan) const;
 
     private:
@@ -129,15 +132,18 @@ namespace ompl_mm
                        ? weights_.moveToObjectPenalty + weights_.moveToObjectFactor * distance
                        : 0.0;
         }
-        /** The robot's own distance between a packed robot part and a point (symmetric). */
-        double robotTerm(const double *packedRobot, const MetricPoint &point) const;
-        /** Adds to `cost` the tool's legs from startTool to each moving object (nearest first) and
-            on to targetTool; infinity once the total reaches cutoff; cost itself when none moves. */
+        /** Fills query.toolToObjects from query.point. */
+        void fillToolToObjects(Query &query) const;
+        /** The robot's own distance between a packed vertex and a point (symmetric). */
+        double robotTerm(const double *packedVertex, const MetricPoint &point) const;
+        /** Adds to `cost` the tool's legs from its start to each moving object of `from` (nearest
+            first) and on to its target, given the squared distances from the start to the objects
+            of `from` and from the target to those of `to`; infinity once the total reaches cutoff. */
         double addToolLegs(const MetricPoint &from, const MetricPoint &to, std::uint64_t moving,
-                           const Eigen::Vector3d &startTool, const Eigen::Vector3d &targetTool, double cost,
+                           const double *startSquared, const double *targetSquared, double cost,
                            double cutoff, LegPlan &plan) const;
-        /** Fills plan for the objects moving from `from` to `to`. */
-        void planLegs(const MetricPoint &from, const MetricPoint &to, std::uint64_t moving,
+        /** Plans the visit of the objects moving from `from` to `to` that starts at object first. */
+        void planLegs(const MetricPoint &from, const MetricPoint &to, std::uint64_t moving, int first,
                       LegPlan &plan) const;
 
         const ManipulationStateSpace *space_;

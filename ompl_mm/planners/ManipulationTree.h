@@ -99,7 +99,7 @@ namespace ompl_mm
                        double *bestDistance) const;
 
         std::vector<Vertex> vertices_;
-        std::vector<double> packedRobots_;  ///< ManipulationMetric::packRobot of each vertex, in order
+        std::vector<double> packedVertices_;  ///< ManipulationMetric::packVertex of each vertex, in order
         std::vector<Group> groups_;
         std::vector<double> boxes_;  ///< storage of all Bounds
         mutable std::vector<ManipulationMetric::ObjectCost> groupCosts_;

@@ -18,24 +18,39 @@ namespace ompl_mm
                    std::abs(a.yaws[i] - b.yaws[i]) > SAME;
         }
 
-        /** The object of the set `objects` (bits) whose position is nearest to point; its squared
-            distance in *squared. @pre objects != 0. */
-        int nearestObject(std::uint64_t objects, const std::vector<Eigen::Vector3d> &positions,
-                          const Eigen::Vector3d &point, double *squared)
+        /** The object of the set `objects` (bits) with the smallest squared distance (the first
+            such, in index order); that distance in *nearest. @pre objects != 0. */
+        int nearestObject(std::uint64_t objects, const double *squared, double *nearest)
         {
-            int nearest = __builtin_ctzll(objects);
-            *squared = (positions[nearest] - point).squaredNorm();
+            int index = __builtin_ctzll(objects);
+            *nearest = squared[index];
             for (std::uint64_t rest = objects & (objects - 1); rest != 0; rest &= rest - 1)
             {
                 const int i = __builtin_ctzll(rest);
-                const double d = (positions[i] - point).squaredNorm();
-                if (d < *squared)
+                if (squared[i] < *nearest)
                 {
-                    *squared = d;
-                    nearest = i;
+                    *nearest = squared[i];
+                    index = i;
                 }
             }
-            return nearest;
+            return index;
+        }
+
+        /** Squared distances from point to the objects of the set `objects` (bits) into out. */
+        void squaredDistances(std::uint64_t objects, const std::vector<Eigen::Vector3d> &positions,
+                              const Eigen::Vector3d &point, double *out)
+        {
+            for (; objects != 0; objects &= objects - 1)
+            {
+                const int i = __builtin_ctzll(objects);
+                out[i] = (positions[i] - point).squaredNorm();
+            }
+        }
+
+        /** The set of all n objects, as bits. */
+        std::uint64_t allObjects(std::size_t n)
+        {
+            return n == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
         }
     }  // namespace
 
@@ -63,16 +78,19 @@ namespace ompl_mm
         }
     }
 
-    void ManipulationMetric::packRobot(const MetricPoint &point, double *out) const
+    void ManipulationMetric::packVertex(const MetricPoint &point, const MetricPoint &objects,
+                                        double *out) const
     {
         std::copy_n(point.tool.data(), 3, out);
         std::copy_n(point.toolRotation.coeffs().data(), 4, out + 3);
         std::copy(point.joints.begin(), point.joints.end(), out + 7);
+        squaredDistances(allObjects(objects.objects.size()), objects.objects, point.tool,
+                         out + 7 + point.joints.size());
     }
 
-    double ManipulationMetric::robotTerm(const double *packedRobot, const MetricPoint &point) const
+    double ManipulationMetric::robotTerm(const double *packedVertex, const MetricPoint &point) const
     {
-        const double *joints = packedRobot + 7;
+        const double *joints = packedVertex + 7;
         double squared = 0.0;
         for (std::size_t j = 0; j < point.joints.size(); ++j)
             squared += (joints[j] - point.joints[j]) * (joints[j] - point.joints[j]);
@@ -80,56 +98,54 @@ namespace ompl_mm
             return std::sqrt(squared);
         const double rotation =
             1.0 -
-            std::abs(Eigen::Map<const Eigen::Vector4d>(packedRobot + 3).dot(point.toolRotation.coeffs()));
-        const double tool = (Eigen::Map<const Eigen::Vector3d>(packedRobot) - point.tool).norm();
+            std::abs(Eigen::Map<const Eigen::Vector4d>(packedVertex + 3).dot(point.toolRotation.coeffs()));
+        const double tool = (Eigen::Map<const Eigen::Vector3d>(packedVertex) - point.tool).norm();
         return weights_.robotWeight * (0.5 * std::sqrt(squared) + tool + 2.0 * rotation);
     }
 
     void ManipulationMetric::planLegs(const MetricPoint &from, const MetricPoint &to, std::uint64_t moving,
-                                      LegPlan &plan) const
+                                      int first, LegPlan &plan) const
     {
         plan.legsAfter.resize(from.objects.size());
-        plan.lastEnd.resize(from.objects.size());
-        for (std::uint64_t firsts = moving; firsts != 0; firsts &= firsts - 1)
+        plan.last.resize(from.objects.size());
+        std::uint64_t pending = moving & ~(std::uint64_t{1} << first);
+        double squared[MAX_OBJECTS];
+        int last = first;
+        double legs = 0.0;
+        while (pending != 0)
         {
-            const int first = __builtin_ctzll(firsts);
-            std::uint64_t pending = moving & ~(std::uint64_t{1} << first);
-            Eigen::Vector3d tool = to.objects[first];
-            double legs = 0.0;
-            while (pending != 0)
-            {
-                double nearest = 0.0;
-                const int next = nearestObject(pending, from.objects, tool, &nearest);
-                pending &= ~(std::uint64_t{1} << next);
-                legs += approachCost(std::sqrt(nearest));
-                tool = to.objects[next];
-            }
-            plan.legsAfter[first] = legs;
-            plan.lastEnd[first] = tool;
+            // from where the tool left the last object to each pending one
+            squaredDistances(pending, from.objects, to.objects[last], squared);
+            double nearest = 0.0;
+            last = nearestObject(pending, squared, &nearest);
+            pending &= ~(std::uint64_t{1} << last);
+            legs += approachCost(std::sqrt(nearest));
         }
-        plan.ready = true;
+        plan.legsAfter[first] = legs;
+        plan.last[first] = last;
+        plan.planned |= std::uint64_t{1} << first;
     }
 
     double ManipulationMetric::addToolLegs(const MetricPoint &from, const MetricPoint &to,
-                                           std::uint64_t moving, const Eigen::Vector3d &startTool,
-                                           const Eigen::Vector3d &targetTool, double cost, double cutoff,
+                                           std::uint64_t moving, const double *startSquared,
+                                           const double *targetSquared, double cost, double cutoff,
                                            LegPlan &plan) const
     {
         if (moving == 0)
             return cost;
         // the first object is the moving one nearest to the start; the rest of the visit is planned
         double nearest = 0.0;
-        const int first = nearestObject(moving, from.objects, startTool, &nearest);
+        const int first = nearestObject(moving, startSquared, &nearest);
         cost += approachCost(std::sqrt(nearest));
         if (cost >= cutoff)
             return std::numeric_limits<double>::infinity();
         if ((moving & (moving - 1)) == 0)
-            cost += (targetTool - to.objects[first]).norm();
+            cost += std::sqrt(targetSquared[first]);
         else
         {
-            if (!plan.ready)
-                planLegs(from, to, moving, plan);
-            cost += plan.legsAfter[first] + (targetTool - plan.lastEnd[first]).norm();
+            if ((plan.planned >> first & 1) == 0)
+                planLegs(from, to, moving, first, plan);
+            cost += plan.legsAfter[first] + std::sqrt(targetSquared[plan.last[first]]);
         }
         return cost < cutoff ? cost : std::numeric_limits<double>::infinity();
     }
@@ -152,9 +168,9 @@ namespace ompl_mm
         {
             const int i = __builtin_ctzll(rest);
             first = std::min(first, startsAtVertex ? toolBox.squaredExteriorDistance(from.objects[i])
-                                                   : (from.objects[i] - query.point.tool).squaredNorm());
-            last = std::min(last, endsAtVertex ? toolBox.squaredExteriorDistance(to.objects[i])
-                                               : (to.objects[i] - query.point.tool).squaredNorm());
+                                                   : query.toolToObjects[i]);
+            last = std::min(
+                last, endsAtVertex ? toolBox.squaredExteriorDistance(to.objects[i]) : query.toolToObjects[i]);
         }
         return approachCost(std::sqrt(first)) + std::sqrt(last);
     }
@@ -188,18 +204,17 @@ namespace ompl_mm
 
     double ManipulationMetric::distance(const MetricPoint &from, const MetricPoint &to) const
     {
-        std::vector<double> packed(packedRobotSize());
-        packRobot(from, packed.data());
-        const ObjectCost objects = objectCost(from, to, nullptr);
-        LegPlan plan;
-        return addToolLegs(from, to, objects.moving, from.tool, to.tool,
-                           robotTerm(packed.data(), to) + objects.bound,
-                           std::numeric_limits<double>::infinity(), plan);
+        Query query;
+        query.point = to;
+        fillToolToObjects(query);
+        query.objectDefined.assign(to.objects.size(), 1);
+        return distance(from, query, objectCost(from, query));
     }
 
     void ManipulationMetric::makeQuery(const PartialState &sample, bool sampleIsTarget, Query &query) const
     {
         makePoint(sample.state(), query.point);
+        fillToolToObjects(query);
         query.objectDefined.resize(space_->objectCount());
         for (unsigned int i = 0; i < space_->objectCount(); ++i)
             query.objectDefined[i] = sample.objectDefined(i);
@@ -207,32 +222,50 @@ namespace ompl_mm
         query.sampleIsTarget = sampleIsTarget;
     }
 
+    void ManipulationMetric::fillToolToObjects(Query &query) const
+    {
+        query.toolToObjects.resize(query.point.objects.size());
+        squaredDistances(allObjects(query.point.objects.size()), query.point.objects, query.point.tool,
+                         query.toolToObjects.data());
+    }
+
     double ManipulationMetric::distance(const MetricPoint &vertex, const Query &query,
                                         const ObjectCost &objectCost, double cutoff) const
     {
-        std::vector<double> packed(packedRobotSize());
-        packRobot(vertex, packed.data());
+        std::vector<double> packed(packedVertexSize());
+        packVertex(vertex, vertex, packed.data());
         LegPlan plan;
         return distance(packed.data(), vertex, query, objectCost, cutoff, plan);
     }
 
-    double ManipulationMetric::distance(const double *packedRobot, const MetricPoint &objects,
+    double ManipulationMetric::distance(const double *packedVertex, const MetricPoint &objects,
                                         const Query &query, const ObjectCost &objectCost, double cutoff,
                                         LegPlan &plan) const
     {
-        const MetricPoint &from = query.sampleIsTarget ? objects : query.point;
-        const MetricPoint &to = query.sampleIsTarget ? query.point : objects;
-        const Eigen::Vector3d vertexTool = Eigen::Map<const Eigen::Vector3d>(packedRobot);
-        // an undefined robot takes the vertex's pose: no robot term, and the tool starts and ends there
+        double cost = objectCost.bound;
+        if (query.robotDefined)
+        {
+            cost = robotTerm(packedVertex, query.point) + cost;
+            if (cost >= cutoff)
+                return std::numeric_limits<double>::infinity();
+        }
+        if (objectCost.moving == 0)
+            return cost;
+        // the tool starts at the vertex (forward, or undefined robot) or at the sample, and ends at
+        // the sample (forward with a defined robot) or at the vertex; an undefined robot takes the
+        // vertex's pose, whose tool then meets the sample's objects
+        const double *vertexSquared = packedVertex + 7 + query.point.joints.size();
+        double crossSquared[MAX_OBJECTS];
+        const double *sampleSquared = query.toolToObjects.data();
         if (!query.robotDefined)
-            return addToolLegs(from, to, objectCost.moving, vertexTool, vertexTool, objectCost.bound, cutoff,
-                               plan);
-        const double cost = robotTerm(packedRobot, query.point) + objectCost.bound;
-        if (cost >= cutoff)
-            return std::numeric_limits<double>::infinity();
-        return query.sampleIsTarget ? addToolLegs(from, to, objectCost.moving, vertexTool, query.point.tool,
-                                                  cost, cutoff, plan)
-                                    : addToolLegs(from, to, objectCost.moving, query.point.tool, vertexTool,
-                                                  cost, cutoff, plan);
+        {
+            const Eigen::Vector3d vertexTool = Eigen::Map<const Eigen::Vector3d>(packedVertex);
+            squaredDistances(objectCost.moving, query.point.objects, vertexTool, crossSquared);
+            sampleSquared = crossSquared;
+        }
+        return query.sampleIsTarget ? addToolLegs(objects, query.point, objectCost.moving, vertexSquared,
+                                                  sampleSquared, cost, cutoff, plan)
+                                    : addToolLegs(query.point, objects, objectCost.moving, sampleSquared,
+                                                  vertexSquared, cost, cutoff, plan);
     }
 }  // namespace ompl_mm

@@ -50,9 +50,12 @@ namespace ompl_mm
         extendBounds(group.bounds, vertex.point);
         extendBounds(group.blocks.back().bounds, vertex.point);
         ++group.blocks.back().end;
-        packedRobots_.resize((index + 1) * metric_->packedRobotSize());
-        metric_->packRobot(vertex.point, packedRobots_.data() + index * metric_->packedRobotSize());
         vertices_.push_back(std::move(vertex));
+        // against the group's objects, which the scan uses for all members
+        const std::size_t stride = metric_->packedVertexSize();
+        packedVertices_.resize((index + 1) * stride);
+        metric_->packVertex(vertices_.back().point, vertices_[group.first].point,
+                            packedVertices_.data() + index * stride);
         if (parent < 0)
             ++roots_;
         return index;
@@ -71,7 +74,7 @@ namespace ompl_mm
             groups_.pop_back();
         space_->freeState(vertices_.back().state);
         vertices_.pop_back();
-        packedRobots_.resize(vertices_.size() * metric_->packedRobotSize());
+        packedVertices_.resize(vertices_.size() * metric_->packedVertexSize());
     }
 
     void ManipulationTree::clear()
@@ -147,8 +150,8 @@ namespace ompl_mm
     {
         const Group &group = groups_[g];
         const MetricPoint &objects = vertices_[group.first].point;
-        const std::size_t stride = metric_->packedRobotSize();
-        legPlan_.ready = false;
+        const std::size_t stride = metric_->packedVertexSize();
+        legPlan_.planned = 0;
         for (const Block &block : group.blocks)
         {
             // a single block's bound is the group's, already checked
@@ -158,7 +161,7 @@ namespace ompl_mm
             for (std::size_t m = block.begin; m < block.end; ++m)
             {
                 const int i = group.members[m];
-                const double d = metric_->distance(packedRobots_.data() + i * stride, objects, query,
+                const double d = metric_->distance(packedVertices_.data() + i * stride, objects, query,
                                                    groupCosts_[g], *bestDistance, legPlan_);
                 if (d < *bestDistance)
                 {
