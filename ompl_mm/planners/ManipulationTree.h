@@ -78,6 +78,7 @@ namespace ompl_mm
         {
             int first;  ///< a member, whose point holds the objects
             std::vector<int> members;
+            std::vector<double> packed;  ///< ManipulationMetric::packVertex of the members, in order
             Bounds bounds;
             std::vector<Block> blocks;
         };
@@ -99,7 +100,6 @@ namespace ompl_mm
                        double *bestDistance) const;
 
         std::vector<Vertex> vertices_;
-        std::vector<double> packedVertices_;  ///< ManipulationMetric::packVertex of each vertex, in order
         std::vector<Group> groups_;
         std::vector<double> boxes_;  ///< storage of all Bounds
         mutable std::vector<ManipulationMetric::ObjectCost> groupCosts_;

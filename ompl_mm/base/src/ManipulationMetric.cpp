@@ -88,7 +88,7 @@ namespace ompl_mm
                          out + 7 + point.joints.size());
     }
 
-    double ManipulationMetric::robotTerm(const double *packedVertex, const MetricPoint &point) const
+    inline double ManipulationMetric::robotTerm(const double *packedVertex, const MetricPoint &point) const
     {
         const double *joints = packedVertex + 7;
         double squared = 0.0;
@@ -126,10 +126,10 @@ namespace ompl_mm
         plan.planned |= std::uint64_t{1} << first;
     }
 
-    double ManipulationMetric::addToolLegs(const MetricPoint &from, const MetricPoint &to,
-                                           std::uint64_t moving, const double *startSquared,
-                                           const double *targetSquared, double cost, double cutoff,
-                                           LegPlan &plan) const
+    inline double ManipulationMetric::addToolLegs(const MetricPoint &from, const MetricPoint &to,
+                                                  std::uint64_t moving, const double *startSquared,
+                                                  const double *targetSquared, double cost, double cutoff,
+                                                  LegPlan &plan) const
     {
         if (moving == 0)
             return cost;
@@ -242,30 +242,53 @@ namespace ompl_mm
                                         const Query &query, const ObjectCost &objectCost, double cutoff,
                                         LegPlan &plan) const
     {
-        double cost = objectCost.bound;
-        if (query.robotDefined)
-        {
-            cost = robotTerm(packedVertex, query.point) + cost;
-            if (cost >= cutoff)
-                return std::numeric_limits<double>::infinity();
-        }
-        if (objectCost.moving == 0)
-            return cost;
+        double best = cutoff;
+        return nearest(packedVertex, 1, objects, query, objectCost, plan, &best) == 0
+                   ? best
+                   : std::numeric_limits<double>::infinity();
+    }
+
+    int ManipulationMetric::nearest(const double *packedVertices, std::size_t count,
+                                    const MetricPoint &objects, const Query &query,
+                                    const ObjectCost &objectCost, LegPlan &plan, double *best) const
+    {
         // the tool starts at the vertex (forward, or undefined robot) or at the sample, and ends at
         // the sample (forward with a defined robot) or at the vertex; an undefined robot takes the
         // vertex's pose, whose tool then meets the sample's objects
-        const double *vertexSquared = packedVertex + 7 + query.point.joints.size();
+        const MetricPoint &from = query.sampleIsTarget ? objects : query.point;
+        const MetricPoint &to = query.sampleIsTarget ? query.point : objects;
+        const std::size_t stride = packedVertexSize();
+        const std::size_t squaredOffset = 7 + query.point.joints.size();
         double crossSquared[MAX_OBJECTS];
-        const double *sampleSquared = query.toolToObjects.data();
-        if (!query.robotDefined)
+        int nearest = -1;
+        for (std::size_t k = 0; k < count; ++k)
         {
-            const Eigen::Vector3d vertexTool = Eigen::Map<const Eigen::Vector3d>(packedVertex);
-            squaredDistances(objectCost.moving, query.point.objects, vertexTool, crossSquared);
-            sampleSquared = crossSquared;
+            const double *vertex = packedVertices + k * stride;
+            double cost = objectCost.bound;
+            if (query.robotDefined)
+            {
+                cost = robotTerm(vertex, query.point) + cost;
+                if (cost >= *best)
+                    continue;
+            }
+            const double *sampleSquared = query.toolToObjects.data();
+            if (!query.robotDefined)
+            {
+                const Eigen::Vector3d vertexTool = Eigen::Map<const Eigen::Vector3d>(vertex);
+                squaredDistances(objectCost.moving, query.point.objects, vertexTool, crossSquared);
+                sampleSquared = crossSquared;
+            }
+            const double *vertexSquared = vertex + squaredOffset;
+            cost = query.sampleIsTarget ? addToolLegs(from, to, objectCost.moving, vertexSquared,
+                                                      sampleSquared, cost, *best, plan)
+                                        : addToolLegs(from, to, objectCost.moving, sampleSquared,
+                                                      vertexSquared, cost, *best, plan);
+            if (cost < *best)
+            {
+                *best = cost;
+                nearest = static_cast<int>(k);
+            }
         }
-        return query.sampleIsTarget ? addToolLegs(objects, query.point, objectCost.moving, vertexSquared,
-                                                  sampleSquared, cost, cutoff, plan)
-                                    : addToolLegs(query.point, objects, objectCost.moving, sampleSquared,
-                                                  vertexSquared, cost, cutoff, plan);
+        return nearest;
     }
 }  // namespace ompl_mm

@@ -40,7 +40,7 @@ namespace ompl_mm
         Vertex vertex{space_->cloneState(state), parent, label, {}, groups_.size()};
         metric_->makePoint(vertex.state, vertex.point);
         if (parent < 0 || space_->anyObjectMoves(state, vertices_[parent].state))
-            groups_.push_back({index, {}, newBounds(), {}});
+            groups_.push_back({index, {}, {}, newBounds(), {}});
         else
             vertex.group = vertices_[parent].group;
         Group &group = groups_[vertex.group];
@@ -53,9 +53,9 @@ namespace ompl_mm
         vertices_.push_back(std::move(vertex));
         // against the group's objects, which the scan uses for all members
         const std::size_t stride = metric_->packedVertexSize();
-        packedVertices_.resize((index + 1) * stride);
+        group.packed.resize(group.members.size() * stride);
         metric_->packVertex(vertices_.back().point, vertices_[group.first].point,
-                            packedVertices_.data() + index * stride);
+                            group.packed.data() + group.packed.size() - stride);
         if (parent < 0)
             ++roots_;
         return index;
@@ -68,13 +68,13 @@ namespace ompl_mm
         // boxes may stay larger than their members: still valid bounds
         Group &group = groups_[vertices_.back().group];
         group.members.pop_back();
+        group.packed.resize(group.members.size() * metric_->packedVertexSize());
         if (--group.blocks.back().end == group.blocks.back().begin)
             group.blocks.pop_back();
         if (group.members.empty())
             groups_.pop_back();
         space_->freeState(vertices_.back().state);
         vertices_.pop_back();
-        packedVertices_.resize(vertices_.size() * metric_->packedVertexSize());
     }
 
     void ManipulationTree::clear()
@@ -158,17 +158,11 @@ namespace ompl_mm
             if (group.blocks.size() > 1 &&
                 !mayBeat(g, block.bounds, objectAndRobotBound(g, block.bounds, query), query, *bestDistance))
                 continue;
-            for (std::size_t m = block.begin; m < block.end; ++m)
-            {
-                const int i = group.members[m];
-                const double d = metric_->distance(packedVertices_.data() + i * stride, objects, query,
-                                                   groupCosts_[g], *bestDistance, legPlan_);
-                if (d < *bestDistance)
-                {
-                    *bestDistance = d;
-                    *best = i;
-                }
-            }
+            const int m =
+                metric_->nearest(group.packed.data() + block.begin * stride, block.end - block.begin, objects,
+                                 query, groupCosts_[g], legPlan_, bestDistance);
+            if (m >= 0)
+                *best = group.members[block.begin + m];
         }
     }
 
