@@ -87,9 +87,10 @@ namespace ompl_mm
         bool boundUsesToolDistance() const { return !mobile_; }
 
         /** A lower bound of the tool's legs (first approach and final return) for vertices with
-            these objects whose tool points lie in toolBox. */
-        double legLowerBound(const MetricPoint &objects, const Query &query, const ObjectCost &objectCost,
-                             const Eigen::AlignedBox3d &toolBox) const;
+            the same objects whose tool points lie in toolBox and whose squared tool distance to
+            object i is at least nearestSquared[i]. */
+        double legLowerBound(const Query &query, const ObjectCost &objectCost,
+                             const Eigen::AlignedBox3d &toolBox, const double *nearestSquared) const;
 
         /** Distance between a tree vertex and a prepared sample; returns infinity as soon as the
             distance is known to reach `cutoff` (exact below it), which makes linear scans fast.
@@ -104,6 +105,11 @@ namespace ompl_mm
             `objects`, packed, to out (packedVertexSize() doubles): trees keep these contiguous, so a
             scan touches little memory and needs no object geometry of its own. */
         void packVertex(const MetricPoint &point, const MetricPoint &objects, double *out) const;
+        /** The tool's squared distances to the objects in a packed vertex. */
+        const double *packedToolToObjects(const double *packedVertex) const
+        {
+            return packedVertex + 7 + space_->robotDimension();
+        }
         /** The greedy visit of the moving objects depends on a vertex only through its first
             object (the one nearest to its tool); per object i visited first: the cost of the legs
             after it and the object visited last. Shared by vertices with the same objects; each

@@ -60,11 +60,13 @@ namespace ompl_mm
         const ManipulationStateSpace *space_;
         const ManipulationMetric *metric_;
         bool forward_;
-        /** Boxes around the joints and tool points of some vertices: an offset into boxes_, where
-            joint lows, joint highs, tool lows (3) and tool highs (3) follow each other. */
+        /** Boxes around the joints and tool points of some vertices and their tools' least squared
+            distance to each object of their group: an offset into boxes_, where joint lows, joint
+            highs, tool lows (3), tool highs (3) and those distances follow each other. */
         using Bounds = std::size_t;
         Bounds newBounds();
-        void extendBounds(Bounds bounds, const MetricPoint &point);
+        /** Extends bounds by a vertex with its packed data (ManipulationMetric::packVertex). */
+        void extendBounds(Bounds bounds, const MetricPoint &point, const double *packed);
 
         /** Consecutive members of a group (often neighbours along one extension) with their bounds. */
         struct Block

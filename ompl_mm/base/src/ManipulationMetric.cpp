@@ -150,27 +150,26 @@ namespace ompl_mm
         return cost < cutoff ? cost : std::numeric_limits<double>::infinity();
     }
 
-    double ManipulationMetric::legLowerBound(const MetricPoint &objects, const Query &query,
-                                             const ObjectCost &objectCost,
-                                             const Eigen::AlignedBox3d &toolBox) const
+    double ManipulationMetric::legLowerBound(const Query &query, const ObjectCost &objectCost,
+                                             const Eigen::AlignedBox3d &toolBox,
+                                             const double *nearestSquared) const
     {
         if (objectCost.moving == 0)
             return 0.0;
-        // the tool starts at the vertex (forward, or undefined robot) or at the sample, and ends
-        // at the sample (forward with a defined robot) or at the vertex
-        const MetricPoint &from = query.sampleIsTarget ? objects : query.point;
-        const MetricPoint &to = query.sampleIsTarget ? query.point : objects;
-        const bool startsAtVertex = query.sampleIsTarget || !query.robotDefined;
-        const bool endsAtVertex = !query.sampleIsTarget || !query.robotDefined;
+        // as in nearest(): the tool meets the vertices' objects at the start (forward) or at the
+        // end, and the sample's at the other end, from the sample's tool or, when its robot is
+        // undefined, from the vertices' own (in the box)
         double first = std::numeric_limits<double>::infinity();
         double last = std::numeric_limits<double>::infinity();
         for (std::uint64_t rest = objectCost.moving; rest != 0; rest &= rest - 1)
         {
             const int i = __builtin_ctzll(rest);
-            first = std::min(first, startsAtVertex ? toolBox.squaredExteriorDistance(from.objects[i])
-                                                   : query.toolToObjects[i]);
-            last = std::min(
-                last, endsAtVertex ? toolBox.squaredExteriorDistance(to.objects[i]) : query.toolToObjects[i]);
+            const double vertexSide = nearestSquared[i];
+            const double sampleSide = query.robotDefined
+                                          ? query.toolToObjects[i]
+                                          : toolBox.squaredExteriorDistance(query.point.objects[i]);
+            first = std::min(first, query.sampleIsTarget ? vertexSide : sampleSide);
+            last = std::min(last, query.sampleIsTarget ? sampleSide : vertexSide);
         }
         return approachCost(std::sqrt(first)) + std::sqrt(last);
     }

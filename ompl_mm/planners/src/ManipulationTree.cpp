@@ -47,15 +47,15 @@ namespace ompl_mm
         if (group.blocks.empty() || group.blocks.back().end - group.blocks.back().begin == BLOCK_SIZE)
             group.blocks.push_back({group.members.size(), group.members.size(), newBounds()});
         group.members.push_back(index);
-        extendBounds(group.bounds, vertex.point);
-        extendBounds(group.blocks.back().bounds, vertex.point);
         ++group.blocks.back().end;
         vertices_.push_back(std::move(vertex));
         // against the group's objects, which the scan uses for all members
         const std::size_t stride = metric_->packedVertexSize();
         group.packed.resize(group.members.size() * stride);
-        metric_->packVertex(vertices_.back().point, vertices_[group.first].point,
-                            group.packed.data() + group.packed.size() - stride);
+        double *packed = group.packed.data() + group.packed.size() - stride;
+        metric_->packVertex(vertices_.back().point, vertices_[group.first].point, packed);
+        extendBounds(group.bounds, vertices_.back().point, packed);
+        extendBounds(group.blocks.back().bounds, vertices_.back().point, packed);
         if (parent < 0)
             ++roots_;
         return index;
@@ -95,10 +95,11 @@ namespace ompl_mm
         for (std::size_t k = 0; k < dof; ++k)
             boxes_.push_back(-inf);
         boxes_.insert(boxes_.end(), {inf, inf, inf, -inf, -inf, -inf});
+        boxes_.insert(boxes_.end(), space_->objectCount(), inf);
         return bounds;
     }
 
-    void ManipulationTree::extendBounds(Bounds bounds, const MetricPoint &point)
+    void ManipulationTree::extendBounds(Bounds bounds, const MetricPoint &point, const double *packed)
     {
         const std::size_t dof = point.joints.size();
         double *box = boxes_.data() + bounds;
@@ -112,6 +113,9 @@ namespace ompl_mm
             box[2 * dof + k] = std::min(box[2 * dof + k], point.tool[k]);
             box[2 * dof + 3 + k] = std::max(box[2 * dof + 3 + k], point.tool[k]);
         }
+        const double *toObjects = metric_->packedToolToObjects(packed);
+        for (std::size_t i = 0; i < space_->objectCount(); ++i)
+            box[2 * dof + 6 + i] = std::min(box[2 * dof + 6 + i], toObjects[i]);
     }
 
     double ManipulationTree::objectAndRobotBound(std::size_t g, Bounds bounds,
@@ -135,7 +139,7 @@ namespace ompl_mm
         const double *tools = boxes_.data() + bounds + 2 * query.point.joints.size();
         const Eigen::AlignedBox3d toolBox(Eigen::Map<const Eigen::Vector3d>(tools),
                                           Eigen::Map<const Eigen::Vector3d>(tools + 3));
-        return metric_->legLowerBound(vertices_[groups_[g].first].point, query, groupCosts_[g], toolBox);
+        return metric_->legLowerBound(query, groupCosts_[g], toolBox, tools + 6);
     }
 
     bool ManipulationTree::mayBeat(std::size_t g, Bounds bounds, double objectAndRobot,
