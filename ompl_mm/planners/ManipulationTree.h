@@ -60,20 +60,14 @@ namespace ompl_mm
         const ManipulationStateSpace *space_;
         const ManipulationMetric *metric_;
         bool forward_;
-        /** Boxes around the joints and tool points of some vertices and their tools' least squared
-            distance to each object of their group: an offset into boxes_, where joint lows, joint
-            highs, tool lows (3), tool highs (3) and those distances follow each other. */
+        /** Bounds of a group's members: boxes around their joints and tool points and their
+            tools' least squared distance to each object of the group; an offset into boxes_,
+            where joint lows, joint highs, tool lows (3), tool highs (3) and those distances
+            follow each other. */
         using Bounds = std::size_t;
         Bounds newBounds();
         /** Extends bounds by a vertex with its packed data (ManipulationMetric::packVertex). */
         void extendBounds(Bounds bounds, const MetricPoint &point, const double *packed);
-
-        /** Consecutive members of a group (often neighbours along one extension) with their bounds. */
-        struct Block
-        {
-            std::size_t begin, end;  ///< range in Group::members
-            Bounds bounds;
-        };
 
         /** Vertices sharing one object configuration. */
         struct Group
@@ -82,22 +76,16 @@ namespace ompl_mm
             std::vector<int> members;
             std::vector<double> packed;  ///< ManipulationMetric::packVertex of the members, in order
             Bounds bounds;
-            std::vector<Block> blocks;
         };
 
-        /** Members per block. */
-        static constexpr std::size_t BLOCK_SIZE = 8;
-
-        /** Lower bound of the distance from vertices of group g within bounds to the query: the
-            objects' cost and the robot's distance to the boxes. */
-        double objectAndRobotBound(std::size_t g, Bounds bounds,
-                                   const ManipulationMetric::Query &query) const;
+        /** Lower bound of the distance from the members of group g to the query: the objects'
+            cost and the robot's distance to the boxes. */
+        double objectAndRobotBound(std::size_t g, const ManipulationMetric::Query &query) const;
         /** Lower bound of the tool's first approach and last return for those vertices. */
-        double legBound(std::size_t g, Bounds bounds, const ManipulationMetric::Query &query) const;
-        /** True unless the bounds show that no vertex of group g within bounds is nearer than best. */
-        bool mayBeat(std::size_t g, Bounds bounds, double objectAndRobot,
-                     const ManipulationMetric::Query &query, double best) const;
-        /** Scans the blocks of group g whose bounds may beat *bestDistance. */
+        double legBound(std::size_t g, const ManipulationMetric::Query &query) const;
+        /** True unless the bounds show that no member of group g is nearer than best. */
+        bool mayBeat(std::size_t g, const ManipulationMetric::Query &query, double best) const;
+        /** Scans the members of group g for one nearer than *bestDistance. */
         void scanGroup(std::size_t g, const ManipulationMetric::Query &query, int *best,
                        double *bestDistance) const;
 

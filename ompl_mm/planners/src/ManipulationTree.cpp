@@ -40,14 +40,11 @@ namespace ompl_mm
         Vertex vertex{space_->cloneState(state), parent, label, {}, groups_.size()};
         metric_->makePoint(vertex.state, vertex.point);
         if (parent < 0 || space_->anyObjectMoves(state, vertices_[parent].state))
-            groups_.push_back({index, {}, {}, newBounds(), {}});
+            groups_.push_back({index, {}, {}, newBounds()});
         else
             vertex.group = vertices_[parent].group;
         Group &group = groups_[vertex.group];
-        if (group.blocks.empty() || group.blocks.back().end - group.blocks.back().begin == BLOCK_SIZE)
-            group.blocks.push_back({group.members.size(), group.members.size(), newBounds()});
         group.members.push_back(index);
-        ++group.blocks.back().end;
         vertices_.push_back(std::move(vertex));
         // against the group's objects, which the scan uses for all members
         const std::size_t stride = metric_->packedVertexSize();
@@ -55,7 +52,6 @@ namespace ompl_mm
         double *packed = group.packed.data() + group.packed.size() - stride;
         metric_->packVertex(vertices_.back().point, vertices_[group.first].point, packed);
         extendBounds(group.bounds, vertices_.back().point, packed);
-        extendBounds(group.blocks.back().bounds, vertices_.back().point, packed);
         if (parent < 0)
             ++roots_;
         return index;
@@ -65,14 +61,15 @@ namespace ompl_mm
     {
         if (vertices_.back().parent < 0)
             --roots_;
-        // boxes may stay larger than their members: still valid bounds
+        // bounds may stay larger than the members: still valid
         Group &group = groups_[vertices_.back().group];
         group.members.pop_back();
         group.packed.resize(group.members.size() * metric_->packedVertexSize());
-        if (--group.blocks.back().end == group.blocks.back().begin)
-            group.blocks.pop_back();
         if (group.members.empty())
+        {
+            boxes_.resize(group.bounds);
             groups_.pop_back();
+        }
         space_->freeState(vertices_.back().state);
         vertices_.pop_back();
     }
@@ -118,13 +115,12 @@ namespace ompl_mm
             box[2 * dof + 6 + i] = std::min(box[2 * dof + 6 + i], toObjects[i]);
     }
 
-    double ManipulationTree::objectAndRobotBound(std::size_t g, Bounds bounds,
-                                                 const ManipulationMetric::Query &query) const
+    double ManipulationTree::objectAndRobotBound(std::size_t g, const ManipulationMetric::Query &query) const
     {
         if (!query.robotDefined)
             return groupCosts_[g].bound;
         const std::size_t dof = query.point.joints.size();
-        const double *box = boxes_.data() + bounds;
+        const double *box = boxes_.data() + groups_[g].bounds;
         const double joints = std::sqrt(squaredBoxDistance(box, box + dof, query.point.joints.data(), dof));
         const double tool =
             metric_->boundUsesToolDistance()
@@ -133,41 +129,33 @@ namespace ompl_mm
         return groupCosts_[g].bound + metric_->robotLowerBound(query, joints, tool);
     }
 
-    double ManipulationTree::legBound(std::size_t g, Bounds bounds,
-                                      const ManipulationMetric::Query &query) const
+    double ManipulationTree::legBound(std::size_t g, const ManipulationMetric::Query &query) const
     {
-        const double *tools = boxes_.data() + bounds + 2 * query.point.joints.size();
+        const double *tools = boxes_.data() + groups_[g].bounds + 2 * query.point.joints.size();
         const Eigen::AlignedBox3d toolBox(Eigen::Map<const Eigen::Vector3d>(tools),
                                           Eigen::Map<const Eigen::Vector3d>(tools + 3));
         return metric_->legLowerBound(query, groupCosts_[g], toolBox, tools + 6);
     }
 
-    bool ManipulationTree::mayBeat(std::size_t g, Bounds bounds, double objectAndRobot,
-                                   const ManipulationMetric::Query &query, double best) const
+    bool ManipulationTree::mayBeat(std::size_t g, const ManipulationMetric::Query &query, double best) const
     {
+        // the bounds add their terms in another order than the distances: rounding may lift a
+        // bound a little above the distance it bounds, which the slack absorbs
+        const double slack = best * (1.0 + 1e-9);
         // the cheap part first: often it already reaches the best distance
-        return objectAndRobot < best && objectAndRobot + legBound(g, bounds, query) < best;
+        return groupBounds_[g] < slack && groupBounds_[g] + legBound(g, query) < slack;
     }
 
     void ManipulationTree::scanGroup(std::size_t g, const ManipulationMetric::Query &query, int *best,
                                      double *bestDistance) const
     {
         const Group &group = groups_[g];
-        const MetricPoint &objects = vertices_[group.first].point;
-        const std::size_t stride = metric_->packedVertexSize();
         legPlan_.planned = 0;
-        for (const Block &block : group.blocks)
-        {
-            // a single block's bound is the group's, already checked
-            if (group.blocks.size() > 1 &&
-                !mayBeat(g, block.bounds, objectAndRobotBound(g, block.bounds, query), query, *bestDistance))
-                continue;
-            const int m =
-                metric_->nearest(group.packed.data() + block.begin * stride, block.end - block.begin, objects,
-                                 query, groupCosts_[g], legPlan_, bestDistance);
-            if (m >= 0)
-                *best = group.members[block.begin + m];
-        }
+        const int m =
+            metric_->nearest(group.packed.data(), group.members.size(), vertices_[group.first].point, query,
+                             groupCosts_[g], legPlan_, bestDistance);
+        if (m >= 0)
+            *best = group.members[m];
     }
 
     int ManipulationTree::nearest(const ManipulationMetric::Query &query, double *distance,
@@ -182,15 +170,14 @@ namespace ompl_mm
         for (std::size_t g = 0; g < groups_.size(); ++g)
         {
             groupCosts_[g] = metric_->objectCost(vertices_[groups_[g].first].point, query);
-            groupBounds_[g] = objectAndRobotBound(g, groups_[g].bounds, query);
+            groupBounds_[g] = objectAndRobotBound(g, query);
             if (groupBounds_[g] < groupBounds_[first])
                 first = g;
         }
-        if (!groups_.empty() &&
-            mayBeat(first, groups_[first].bounds, groupBounds_[first], query, bestDistance))
+        if (!groups_.empty() && mayBeat(first, query, bestDistance))
             scanGroup(first, query, &best, &bestDistance);
         for (std::size_t g = 0; g < groups_.size(); ++g)
-            if (g != first && mayBeat(g, groups_[g].bounds, groupBounds_[g], query, bestDistance))
+            if (g != first && mayBeat(g, query, bestDistance))
                 scanGroup(g, query, &best, &bestDistance);
         if (distance)
             *distance = bestDistance;

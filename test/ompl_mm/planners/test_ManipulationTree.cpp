@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -150,6 +152,31 @@ TEST_F(MobileTree, NearestIsExactForTheBackwardTree)
     ManipulationTree tree(&space_, &metric_, false);
     grow(tree, 300);
     expectExactNearest(tree, 300);
+}
+
+TEST_F(MobileTree, NearestFindsAVertexJustBelowTheCutoff)
+{
+    // the search's bounds round differently from the distances; they must not prune a vertex
+    // whose distance lies just below the cutoff
+    PartialState sample(&space_);
+    ManipulationMetric::Query query;
+    for (bool forward : {true, false})
+        for (int k = 0; k < 400; ++k)
+        {
+            ManipulationTree tree(&space_, &metric_, forward);
+            grow(tree, 3);
+            randomSample(sample);
+            metric_.makeQuery(sample, forward, query);
+            double exact = INF;
+            for (std::size_t v = 0; v < tree.size(); ++v)
+            {
+                const MetricPoint &point = tree.vertex(v).point;
+                exact = std::min(exact, metric_.distance(point, query, metric_.objectCost(point, query)));
+            }
+            double d = -1.0;
+            EXPECT_GE(tree.nearest(query, &d, std::nextafter(exact, INF)), 0) << forward << " " << k;
+            EXPECT_EQ(d, exact) << forward << " " << k;
+        }
 }
 
 TEST_F(MobileTree, AddCopiesTheStateAndCachesItsPoint)
