@@ -81,7 +81,12 @@ namespace ompl_mm
 
         /** A lower bound of the robot term for robots whose joints lie at least jointDistance and
             whose tool lies at least toolDistance from the query's (0 when its robot is undefined). */
-        double robotLowerBound(const Query &query, double jointDistance, double toolDistance) const;
+        double robotLowerBound(const Query &query, double jointDistance, double toolDistance) const
+        {
+            if (!query.robotDefined)
+                return 0.0;
+            return mobile_ ? jointDistance : weights_.robotWeight * (0.5 * jointDistance + toolDistance);
+        }
         /** False when robotLowerBound() ignores the tool distance (mobile bases), so callers may
             skip computing it. */
         bool boundUsesToolDistance() const { return !mobile_; }
@@ -132,10 +137,6 @@ namespace ompl_mm
                     const Query &query, const ObjectCost &objectCost, LegPlan &plan, double *best) const;
 
     private:
-        /** Objects that move between a and b (only those `defined` marks, when given) and the
-            penalties and displacements that costs. */
-        ObjectCost objectCost(const MetricPoint &a, const MetricPoint &b,
-                              const std::vector<char> *defined) const;
         /** Cost of the tool's approach to the first object, `distance` away. */
         double approachCost(double distance) const
         {

@@ -12,12 +12,6 @@ namespace ompl_mm
     {
         constexpr double SAME = 1e-9;
 
-        bool moves(const MetricPoint &a, const MetricPoint &b, std::size_t i)
-        {
-            return (a.objects[i] - b.objects[i]).cwiseAbs().maxCoeff() > SAME ||
-                   std::abs(a.yaws[i] - b.yaws[i]) > SAME;
-        }
-
         /** The object of the set `objects` (bits) with the smallest squared distance (the first
             such, in index order); that distance in *nearest. @pre objects != 0. */
         int nearestObject(std::uint64_t objects, const double *squared, double *nearest)
@@ -174,31 +168,29 @@ namespace ompl_mm
         return approachCost(std::sqrt(first)) + std::sqrt(last);
     }
 
-    ManipulationMetric::ObjectCost ManipulationMetric::objectCost(const MetricPoint &a, const MetricPoint &b,
-                                                                  const std::vector<char> *defined) const
-    {
-        ObjectCost cost;
-        for (std::size_t i = 0; i < a.objects.size(); ++i)
-            if ((!defined || (*defined)[i]) && moves(a, b, i))
-            {
-                cost.moving |= std::uint64_t{1} << i;
-                cost.bound += weights_.movingObjectPenalty + (a.objects[i] - b.objects[i]).norm();
-            }
-        return cost;
-    }
-
     ManipulationMetric::ObjectCost ManipulationMetric::objectCost(const MetricPoint &objects,
                                                                   const Query &query) const
     {
-        return objectCost(objects, query.point, &query.objectDefined);
-    }
-
-    double ManipulationMetric::robotLowerBound(const Query &query, double jointDistance,
-                                               double toolDistance) const
-    {
-        if (!query.robotDefined)
-            return 0.0;
-        return mobile_ ? jointDistance : weights_.robotWeight * (0.5 * jointDistance + toolDistance);
+        // raw arrays: a search calls this once per group and query
+        const std::size_t n = objects.objects.size();
+        const Eigen::Vector3d *positions = objects.objects.data();
+        const Eigen::Vector3d *targets = query.point.objects.data();
+        const double *yaws = objects.yaws.data();
+        const double *targetYaws = query.point.yaws.data();
+        const char *defined = query.objectDefined.data();
+        ObjectCost cost;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            if (!defined[i])
+                continue;
+            const Eigen::Vector3d displacement = positions[i] - targets[i];
+            if (displacement.cwiseAbs().maxCoeff() > SAME || std::abs(yaws[i] - targetYaws[i]) > SAME)
+            {
+                cost.moving |= std::uint64_t{1} << i;
+                cost.bound += weights_.movingObjectPenalty + displacement.norm();
+            }
+        }
+        return cost;
     }
 
     double ManipulationMetric::distance(const MetricPoint &from, const MetricPoint &to) const
