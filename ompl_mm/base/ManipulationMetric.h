@@ -132,7 +132,7 @@ namespace ompl_mm
                         const ObjectCost &objectCost, double cutoff, LegPlan &plan) const;
         /** Scans `count` vertices with the same objects, packed one after the other: the position
             of the first one nearest to the query and nearer than *best (whose distance then goes
-            to *best), -1 when there is none. One call per block keeps the scan's loop tight. */
+            to *best), -1 when there is none. One call per group keeps the scan's loop tight. */
         int nearest(const double *packedVertices, std::size_t count, const MetricPoint &objects,
                     const Query &query, const ObjectCost &objectCost, LegPlan &plan, double *best) const;
 

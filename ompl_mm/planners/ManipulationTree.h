@@ -1,8 +1,7 @@
 /* One search tree of MOPL: vertices with their parent, the label of the edge to the parent and
    the cached metric quantities. Nearest-neighbour search is exact for the directed manipulation
    metric, which no metric tree can index: vertices are grouped by object configuration (a vertex
-   reached by a transit joins its parent's group) and within a group into blocks of 8; a group or
-   block is skipped whole when a lower bound of
+   reached by a transit joins its parent's group); a group is skipped whole when a lower bound of
    its distance (its objects' cost, the robot's distance to the group's bounding boxes of joints
    and tool points, and the tool's shortest approach and return) reaches the best distance so
    far, and the rest are scanned with early termination. */
