@@ -1,0 +1,98 @@
+# The harness the app contract tests share (sourced): bounded runs, ok/not ok reporting, scene
+# copies with edits, and checks for bad input. The sourcing script sets plan (the app), scenes
+# (the scene folder), scratch (a scratch folder) and base (the scene file copied by make_scene).
+
+# every run is bounded, so a hang fails the check instead of the whole test
+run_limit=300
+
+passed=0
+failed=0
+ok() {
+    echo "ok - $1"
+    passed=$((passed + 1))
+}
+not_ok() {
+    echo "not ok - $1"
+    shift
+    local line
+    for line in "$@"; do
+        printf '%s\n' "$line" | sed 's/^/#   /'
+    done
+    failed=$((failed + 1))
+}
+
+# run NAME ARGS...: runs the app ($plan) with stdout/stderr in $scratch/NAME.{out,err}; sets $status
+run() {
+    local name=$1
+    shift
+    out=$scratch/$name.out
+    err=$scratch/$name.err
+    timeout "$run_limit" "$plan" "$@" >"$out" 2>"$err"
+    status=$?
+}
+
+# show the last command's output in a failure report
+outputs() {
+    echo "stdout: $(head -c 600 "$out")"
+    echo "stderr: $(head -c 600 "$err")"
+}
+
+# make_scene NAME: copies the base scene to $scratch/scenes/NAME.xml and prints the copy's path
+make_scene() {
+    cp "$scenes/$base" "$scratch/scenes/$1.xml" && echo "$scratch/scenes/$1.xml"
+}
+
+# edit FILE OLD NEW: replaces the one occurrence of OLD in FILE by NEW ("\n" in NEW is a newline)
+edit() {
+    python3 - "$@" <<'PY'
+import sys
+path, old, new = sys.argv[1], sys.argv[2], sys.argv[3].replace("\\n", "\n")
+text = open(path).read()
+if text.count(old) != 1:
+    sys.exit(f"edit: '{old}' occurs {text.count(old)} times in {path}, expected once")
+open(path, "w").write(text.replace(old, new))
+PY
+}
+
+# line_of FILE TEXT: the number of the first line of FILE containing TEXT
+line_of() {
+    grep -n -F -- "$2" "$1" | head -n 1 | cut -d: -f1
+}
+
+# expect_bad NAME SCENE LINE TEXT ARGS...: the app exits 2 and stderr names "scene:LINE:"
+# (LINE "-": just the scene's file name) and contains TEXT; ARGS are passed after SCENE
+expect_bad() {
+    local name=$1 scene=$2 line=$3 text=$4
+    shift 4
+    if [ -z "$line" ]; then
+        not_ok "bad input: $name" "could not generate the scene $scene (edit failed)"
+        return
+    fi
+    run bad "$scene" --time-limit 2 "$@"
+    local where
+    where=$(basename "$scene")
+    [ "$line" != "-" ] && where="$where:$line:"
+    if [ $status -ne 2 ]; then
+        not_ok "bad input: $name" "command: $plan $scene --time-limit 2 $*" "expected exit 2, got $status" "$(outputs)"
+    elif ! grep -q -F -- "$where" "$err"; then
+        not_ok "bad input: $name" "command: $plan $scene --time-limit 2 $*" "stderr does not name '$where'" "$(outputs)"
+    elif ! grep -q -i -F -- "$text" "$err"; then
+        not_ok "bad input: $name" "command: $plan $scene --time-limit 2 $*" "stderr does not mention '$text'" "$(outputs)"
+    else
+        ok "bad input: $name"
+    fi
+}
+
+# expect_bad_option NAME TEXT ARGS...: a bad command line exits 2 with TEXT on stderr
+expect_bad_option() {
+    local name=$1 text=$2
+    shift 2
+    run bad "$@"
+    if [ $status -ne 2 ]; then
+        not_ok "bad input: $name" "command: $plan $*" "expected exit 2, got $status" "$(outputs)"
+    elif ! grep -q -F -- "$text" "$err"; then
+        not_ok "bad input: $name" "command: $plan $*" "stderr does not mention '$text'" "$(outputs)"
+    else
+        ok "bad input: $name"
+    fi
+}
