@@ -285,6 +285,9 @@ namespace ompl_phys
                           "' needs exactly one shape (<box>, <cylinder>, <sphere> or <prism>), found " +
                           std::to_string(shapes.size()));
             body.shape = readShape(shapes.front());
+            // ODE needs a dynamic body's centre of mass at its origin, which a prism's corners do not fix
+            if (body.shape.kind == PhysicsShape::Kind::Prism && body.kind != BodyKind::Fixed)
+                shapes.front().fail("a <prism> can only be a fixed body; '" + body.name + "' is " + kind);
             if (body.kind == BodyKind::Constrained && !hasPush)
                 element.fail("constrained body '" + body.name + "' needs a <push> element (axis and region)");
             scene_.bodies.push_back(body);

@@ -331,6 +331,15 @@ TEST(PhysicsSceneLoader, ZeroPushAxis)
         13, "axis");
 }
 
+TEST(PhysicsSceneLoader, MovablePrism)
+{
+    expectError(
+        replaced(
+            8,
+            R"(  <body name="wedge" kind="free" mass="0.5"><origin xyz="-0.6 0.3 0.1"/><prism corners="0.2 0 -0.1 0.17 -0.1 -0.17" length="0.2"/></body>)"),
+        8, "only be a fixed body");
+}
+
 TEST(PhysicsSceneLoader, PrismWithCollinearCorners)
 {
     expectError(
