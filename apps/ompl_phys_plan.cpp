@@ -64,7 +64,7 @@ namespace
             std::cout << "  goal occupied by " << setup.world().movingBodyName(body) << " at the start\n";
         if (simulated)
         {
-            const ompl_phys::TrajectoryMetrics m = ompl_phys::computeTrajectoryMetrics(simulated->robot);
+            const ompl_phys::TrajectoryMetrics &m = simulated->metrics;
             std::cout << "  path: " << simulated->robot.moves.size() << " moves, "
                       << simulated->robot.stepDuration *
                              static_cast<double>(simulated->robot.positions.size() - 1)

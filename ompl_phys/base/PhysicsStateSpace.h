@@ -36,8 +36,9 @@ namespace ompl_phys
         static constexpr double LINEAR_VELOCITY_WEIGHT = 0.1;
         static constexpr double ANGULAR_VELOCITY_WEIGHT = 0.01;
 
-        /** movingBodies: robot plus movable bodies. The scene must outlive the space. */
-        PhysicsStateSpace(const PhysicsScene &scene, std::size_t movingBodies);
+        /** One component per moving body: the robot, then the movable bodies in scene order. The scene
+            must outlive the space. */
+        explicit PhysicsStateSpace(const PhysicsScene &scene);
 
         std::size_t movingBodyCount() const { return getSubspaceCount(); }
 

@@ -18,6 +18,7 @@ namespace ompl_phys
         RobotTrajectory robot;                 ///< robot centre at every step, and the moves
         Violation violation{Violation::None};  ///< first broken rule; the simulation stops there
         bool reachesGoal{false};               ///< no violation and the last state satisfies the goal
+        TrajectoryMetrics metrics;             ///< action, power and smoothness of `robot`
     };
 
     /** @throws ompl::Exception when a control duration is not a whole number of steps. */

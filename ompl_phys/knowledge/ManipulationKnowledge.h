@@ -24,9 +24,9 @@ namespace ompl_phys
     class ManipulationKnowledge
     {
     public:
-        /** scene must outlive the knowledge. movable: scene body index of each moving body after the robot
-         * (PhysicsWorld's numbering). */
-        ManipulationKnowledge(const PhysicsScene &scene, std::vector<std::size_t> movable);
+        /** scene must outlive the knowledge. Moving bodies are numbered as in PhysicsWorld: the robot,
+            then the free and constraint-oriented bodies in scene order. */
+        explicit ManipulationKnowledge(const PhysicsScene &scene);
 
         /** Whether the robot, centred at robotCentre, may touch scene body `body` in state bodyState
             (ignored for fixed and free bodies). */
@@ -62,8 +62,18 @@ namespace ompl_phys
             double yaw;
         };
 
+        /** A constraint-oriented body's start orientation and push axis on the floor (unused for free
+         * bodies). */
+        struct StartAxis
+        {
+            Eigen::Quaterniond orientation;
+            Eigen::Vector2d axis;
+        };
+
         const PhysicsScene &scene_;
         std::vector<FixedFootprint> fixed_;
-        std::vector<std::size_t> movable_;
+        std::vector<std::size_t> movable_;      ///< scene body of each moving body after the robot
+        std::vector<std::size_t> movingIndex_;  ///< moving index of each scene body (0: fixed)
+        std::vector<StartAxis> startAxes_;      ///< per movable body
     };
 }  // namespace ompl_phys

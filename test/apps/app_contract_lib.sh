@@ -96,3 +96,19 @@ expect_bad_option() {
         ok "bad input: $name"
     fi
 }
+
+# check_svg FILE: FILE is well-formed XML with an <svg> root
+check_svg() {
+    local report
+    if report=$(python3 - "$1" 2>&1 <<'PY'
+import sys
+import xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+assert root.tag in ("svg", "{http://www.w3.org/2000/svg}svg"), f"root element is <{root.tag}>"
+PY
+    ); then
+        ok "SVG is well-formed XML with an <svg> root"
+    else
+        not_ok "SVG is well-formed XML with an <svg> root" "$report"
+    fi
+}

@@ -80,17 +80,7 @@ else
     not_ok "JSON result is valid and complete" "$report" "json: $(head -c 800 "$json1" 2>/dev/null)"
 fi
 
-if report=$(python3 - "$svg" 2>&1 <<'PY'
-import sys
-import xml.etree.ElementTree as ET
-root = ET.parse(sys.argv[1]).getroot()
-assert root.tag in ("svg", "{http://www.w3.org/2000/svg}svg"), f"root element is <{root.tag}>"
-PY
-); then
-    ok "SVG is well-formed XML with an <svg> root"
-else
-    not_ok "SVG is well-formed XML with an <svg> root" "$report"
-fi
+check_svg "$svg"
 
 # --- 3. determinism --------------------------------------------------------------------------------
 json2=$scratch/solved2.json

@@ -39,8 +39,8 @@ int main(int argc, char **argv)
             std::cerr << "downstream_phys: the re-simulated controls miss the goal\n";
             return 1;
         }
-        const ompl_phys::TrajectoryMetrics metrics = ompl_phys::computeTrajectoryMetrics(simulated.robot);
-        std::cout << "downstream_phys: solved " << scene.name << ", action " << metrics.action << '\n';
+        std::cout << "downstream_phys: solved " << scene.name << ", action " << simulated.metrics.action
+                  << '\n';
         return 0;
     }
     catch (const ompl::Exception &e)  // bad input: ompl_mm::InputError names file:line

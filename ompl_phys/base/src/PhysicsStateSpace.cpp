@@ -2,8 +2,6 @@
 
 #include "ompl_phys/base/PhysicsStateSampler.h"
 
-#include <ompl/util/Exception.h>
-
 namespace ompl_phys
 {
     namespace ob = ompl::base;
@@ -50,19 +48,14 @@ namespace ompl_phys
         }
     }  // namespace
 
-    PhysicsStateSpace::PhysicsStateSpace(const PhysicsScene &scene, std::size_t movingBodies) : scene_(scene)
+    PhysicsStateSpace::PhysicsStateSpace(const PhysicsScene &scene) : scene_(scene)
     {
         setName("Physics" + getName());
-        const std::vector<std::size_t> movable = scene.movableBodies();
-        if (movingBodies != 1 + movable.size())
-            throw ompl::Exception("PhysicsStateSpace", "the scene has " + std::to_string(1 + movable.size()) +
-                                                           " moving bodies, not " +
-                                                           std::to_string(movingBodies));
         const PlanningLimits &limits = scene.limits;
         addSubspace(
             bodySpace(scene.robot.name, limits.robotRegion, limits.maxRobotSpeed, limits.maxAngularSpeed),
             ROBOT_WEIGHT);
-        for (std::size_t index : movable)
+        for (std::size_t index : scene.movableBodies())
             addSubspace(bodySpace(scene.bodies[index].name, limits.bodyRegion, limits.maxBodySpeed,
                                   limits.maxAngularSpeed),
                         BODY_WEIGHT);

@@ -59,6 +59,7 @@ namespace ompl_phys
             }
             simulated.robot.moves.push_back(move);
         }
+        simulated.metrics = computeTrajectoryMetrics(simulated.robot);
         simulated.reachesGoal = simulated.violation == Violation::None &&
                                 setup.getProblemDefinition()->getGoal()->isSatisfied(current.get());
         return simulated;

@@ -61,7 +61,7 @@ namespace ompl_phys
 
     oc::SpaceInformationPtr PhysicsSetup::spaceInformation(const PhysicsWorld &world)
     {
-        auto space = std::make_shared<PhysicsStateSpace>(world.scene(), world.movingBodyCount());
+        auto space = std::make_shared<PhysicsStateSpace>(world.scene());
         space->registerDefaultProjection(std::make_shared<RobotProjection>(space.get()));
         return std::make_shared<oc::SpaceInformation>(space,
                                                       forceSpace(space, world.scene().limits.maxForce));
@@ -70,8 +70,7 @@ namespace ompl_phys
     PhysicsSetup::PhysicsSetup(std::unique_ptr<PhysicsWorld> world)
         : oc::SimpleSetup(spaceInformation(*world)),
           world_(std::move(world)),
-          knowledge_(
-              std::make_unique<ManipulationKnowledge>(world_->scene(), world_->scene().movableBodies())),
+          knowledge_(std::make_unique<ManipulationKnowledge>(world_->scene())),
           space_(std::static_pointer_cast<PhysicsStateSpace>(si_->getStateSpace()))
     {
         const PlanningLimits &limits = world_->scene().limits;

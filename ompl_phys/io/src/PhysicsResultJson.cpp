@@ -44,7 +44,7 @@ namespace ompl_phys
         writeStats(out, setup);
         if (solved && simulated)
         {
-            const TrajectoryMetrics metrics = computeTrajectoryMetrics(simulated->robot);
+            const TrajectoryMetrics &metrics = simulated->metrics;
             out << ",\n  \"reaches_goal\": " << (simulated->reachesGoal ? "true" : "false") << ",\n"
                 << "  \"violation\": " << jsonQuoted(violationName(simulated->violation)) << ",\n"
                 << "  \"moves\": " << simulated->robot.moves.size() << ",\n"

@@ -3,7 +3,6 @@
 #include "ompl_phys/knowledge/Footprint.h"
 
 #include <cmath>
-#include <utility>
 
 namespace ompl_phys
 {
@@ -23,13 +22,20 @@ namespace ompl_phys
         }
     }  // namespace
 
-    ManipulationKnowledge::ManipulationKnowledge(const PhysicsScene &scene, std::vector<std::size_t> movable)
-        : scene_(scene), movable_(std::move(movable))
+    ManipulationKnowledge::ManipulationKnowledge(const PhysicsScene &scene)
+        : scene_(scene), movable_(scene.movableBodies()), movingIndex_(scene.bodies.size(), 0)
     {
         for (std::size_t i = 0; i < scene.bodies.size(); ++i)
             if (scene.bodies[i].kind == BodyKind::Fixed)
                 fixed_.push_back({i, scene.bodies[i].start.translation().head<2>(),
                                   yawOf(Eigen::Quaterniond(scene.bodies[i].start.linear()))});
+        for (std::size_t i = 0; i < movable_.size(); ++i)
+        {
+            const PhysicsBody &body = scene.bodies[movable_[i]];
+            movingIndex_[movable_[i]] = i + 1;
+            const Eigen::Quaterniond start(body.start.linear());
+            startAxes_.push_back({start, (start * body.push.axis).head<2>().normalized()});
+        }
     }
 
     bool ManipulationKnowledge::touchAllowed(std::size_t body, const Eigen::Vector3d &robotCentre,
@@ -56,9 +62,8 @@ namespace ompl_phys
                 return Violation::TouchedFixedBody;
             if (kind != BodyKind::Constrained)
                 continue;
-            for (std::size_t i = 0; i < movable_.size(); ++i)
-                if (movable_[i] == body && !touchAllowed(body, states[0].position, states[i + 1]))
-                    return Violation::TouchedOutsideRegion;
+            if (!touchAllowed(body, states[0].position, states[movingIndex_[body]]))
+                return Violation::TouchedOutsideRegion;
         }
         return Violation::None;
     }
@@ -91,11 +96,10 @@ namespace ompl_phys
                 return Violation::TooFast;
             if (body.kind != BodyKind::Constrained)
                 continue;
-            const Eigen::Quaterniond start(body.start.linear());
-            const Eigen::Vector2d axis = (start * body.push.axis).head<2>().normalized();
+            const StartAxis &start = startAxes_[i];
             const Eigen::Vector2d offset = (s.position - body.start.translation()).head<2>();
-            if (std::abs(cross(axis, offset)) > body.push.lateralTolerance ||
-                start.angularDistance(s.orientation) > body.push.angleTolerance)
+            if (std::abs(cross(start.axis, offset)) > body.push.lateralTolerance ||
+                start.orientation.angularDistance(s.orientation) > body.push.angleTolerance)
                 return Violation::LeftPushAxis;
         }
         return Violation::None;
@@ -118,15 +122,10 @@ namespace ompl_phys
     std::vector<std::size_t> ManipulationKnowledge::fixedBodiesOnGoal() const
     {
         std::vector<std::size_t> blocking;
-        for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
-        {
-            const PhysicsBody &body = scene_.bodies[i];
-            if (body.kind == BodyKind::Fixed &&
-                footprintDistance(body.shape, body.start.translation().head<2>(),
-                                  yawOf(Eigen::Quaterniond(body.start.linear())),
-                                  scene_.goal.centre) < scene_.robot.radius)
-                blocking.push_back(i);
-        }
+        for (const FixedFootprint &f : fixed_)
+            if (footprintDistance(scene_.bodies[f.body].shape, f.position, f.yaw, scene_.goal.centre) <
+                scene_.robot.radius)
+                blocking.push_back(f.body);
         return blocking;
     }
 
