@@ -1,11 +1,11 @@
 // ompl_mm_plan: plans a manipulation scene with MOPL and reports the result.
 // Exit codes: 0 solved, 1 not solved, 2 bad input.
 #include "common/AppSupport.h"
-#include "ompl_mm/geometric/ManipulationSetup.h"
+#include "ompl_mm/io/ManipulationRunResult.h"
 #include "ompl_mm/io/PathFile.h"
-#include "ompl_mm/io/ResultJson.h"
 #include "ompl_mm/io/SceneSvg.h"
 #include "ompl_mm/scene/SceneLoader.h"
+#include "ompl_mm/setup/ManipulationSetup.h"
 
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
@@ -34,10 +34,12 @@ namespace
                 argc, argv,
                 "Usage: ompl_mm_plan SCENE.xml [options]\n"
                 "Plans a multi-modal manipulation task (transit, push, ...) with MOPL.\n",
-                "planner to use (mopl)", extra, options.common, exitCode))
+                "planner to use (" + ompl_mm::ManipulationSetup::plannerRegistry().nameList() + ")", extra,
+                options.common, exitCode))
             return false;
-        if (options.common.planner != "mopl")
-            throw ompl_mm::InputError("unknown planner '" + options.common.planner + "' (known: mopl)");
+        if (!ompl_mm::ManipulationSetup::plannerRegistry().has(options.common.planner))
+            throw ompl_core::InputError("unknown planner '" + options.common.planner + "' (known: " +
+                                        ompl_mm::ManipulationSetup::plannerRegistry().nameList() + ")");
         return true;
     }
 
@@ -46,7 +48,8 @@ namespace
     {
         const bool solved = setup.getProblemDefinition()->hasExactSolution();
         const double time = setup.getLastPlanComputationTime();
-        const ompl_mm::MOPLStatistics &stats = setup.mopl()->statistics();
+        const ompl_mm::MOPLStatistics stats =
+            setup.mopl() ? setup.mopl()->statistics() : ompl_mm::MOPLStatistics();
         std::cout << std::fixed << std::setprecision(3) << "scene " << scene.name << ": "
                   << (solved ? "solved" : "not solved") << " in " << time << " s (planner "
                   << options.common.planner << ", seed " << options.common.seed << ")\n";
@@ -73,7 +76,14 @@ namespace
         const ompl_mm::Scene scene = ompl_mm::loadScene(options.common.scene);
         ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         ompl_mm::ManipulationSetup setup(scene);
-        setup.mopl()->setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
+        if (options.common.planner != scene.planner)
+        {
+            setup.setPlannerByName(options.common.planner);
+            ompl_core::applyParameters(*setup.getPlanner(), scene.plannerParams);
+        }
+        ompl_core::applyParameters(*setup.getPlanner(), options.common.parameterSettings());
+        if (const std::shared_ptr<ompl_mm::MOPL> mopl = setup.mopl())
+            mopl->setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         // open the outputs first: a bad path should not cost a whole planning run
         std::ofstream json = ompl_mm::apps::openOutput(options.common.json);
         std::ofstream svg = ompl_mm::apps::openOutput(options.common.svg);
@@ -87,10 +97,8 @@ namespace
 
         printSummary(scene, setup, options);
         if (json.is_open())
-            ompl_mm::writeResultJson(json,
-                                     {scene.name, options.common.planner,
-                                      static_cast<unsigned long>(options.common.seed), timeLimit},
-                                     setup);
+            ompl_core::writeRunJson(
+                json, ompl_mm::manipulationRunResult(options.common.describe(scene.name, timeLimit), setup));
         if (svg.is_open())
             ompl_mm::writeSceneSvg(svg, setup, solved ? &setup.manipulationPath() : nullptr);
         if (path.is_open() && solved)

@@ -4,14 +4,13 @@
 #include "common/AppSupport.h"
 #include "ompl_phys/control/PathSimulation.h"
 #include "ompl_phys/control/PhysicsSetup.h"
-#include "ompl_phys/io/PhysicsResultJson.h"
+#include "ompl_phys/io/PhysicsRunResult.h"
 #include "ompl_phys/io/PhysicsSceneSvg.h"
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
 
 #include <ompl/util/Console.h>
 
 #include <ompl/util/RandomNumbers.h>
-#include <algorithm>
 
 #include <iomanip>
 #include <iostream>
@@ -26,14 +25,6 @@ namespace
         ompl_mm::apps::CommonOptions common{"kpiece"};
     };
 
-    std::string plannerList()
-    {
-        std::string list;
-        for (const std::string &name : ompl_phys::PhysicsSetup::plannerNames())
-            list += (list.empty() ? "" : ", ") + name;
-        return list;
-    }
-
     bool parseOptions(int argc, char **argv, Options &options, int &exitCode)
     {
         po::options_description none;
@@ -42,12 +33,12 @@ namespace
                 "Usage: ompl_phys_plan SCENE.xml [options]\n"
                 "Plans a physics-based pushing task: a sphere robot driven by a planar force in an ODE\n"
                 "world, with manipulation knowledge, using an OMPL control planner.\n",
-                "control planner: " + plannerList(), none, options.common, exitCode))
+                "control planner: " + ompl_phys::PhysicsSetup::plannerRegistry().nameList(), none,
+                options.common, exitCode))
             return false;
-        const auto &names = ompl_phys::PhysicsSetup::plannerNames();
-        if (std::find(names.begin(), names.end(), options.common.planner) == names.end())
-            throw ompl_mm::InputError("unknown planner '" + options.common.planner +
-                                      "' (known: " + plannerList() + ")");
+        if (!ompl_phys::PhysicsSetup::plannerRegistry().has(options.common.planner))
+            throw ompl_core::InputError("unknown planner '" + options.common.planner + "' (known: " +
+                                        ompl_phys::PhysicsSetup::plannerRegistry().nameList() + ")");
         return true;
     }
 
@@ -83,6 +74,7 @@ namespace
         ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         ompl_phys::PhysicsSetup setup(scene);
         setup.setPlannerByName(options.common.planner);
+        ompl_core::applyParameters(*setup.getPlanner(), options.common.parameterSettings());
         // open the outputs first: a bad path should not cost a whole planning run
         std::ofstream json = ompl_mm::apps::openOutput(options.common.json);
         std::ofstream svg = ompl_mm::apps::openOutput(options.common.svg);
@@ -101,10 +93,8 @@ namespace
         const ompl_phys::SimulatedPath *result = simulated ? &*simulated : nullptr;
         printSummary(setup, options, result);
         if (json.is_open())
-            ompl_phys::writePhysicsResultJson(json,
-                                              {scene.name, options.common.planner,
-                                               static_cast<unsigned long>(options.common.seed), timeLimit},
-                                              setup, result);
+            ompl_core::writeRunJson(json, ompl_phys::physicsRunResult(
+                                              options.common.describe(scene.name, timeLimit), setup, result));
         if (svg.is_open())
             ompl_phys::writePhysicsSceneSvg(svg, setup, result,
                                             scene.name + " · " + options.common.planner + " · seed " +

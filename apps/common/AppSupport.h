@@ -1,10 +1,12 @@
 /* What the command-line apps share: the common options (scene, --planner, --seed, --time-limit,
-   --json, --svg, --verbose) with their checks, output files opened before planning, and the
-   mapping of failures to exit codes (2 for bad input, with the message on stderr prefixed by the
-   app's name). */
+   --param, --json, --svg, --verbose) with their checks, output files opened before planning, the
+   run description, and the mapping of failures to exit codes (2 for bad input, with the message on
+   stderr prefixed by the app's name). */
 #pragma once
 
-#include "ompl_mm/scene/InputError.h"
+#include "ompl_core/io/InputError.h"
+#include "ompl_core/run/ParameterSetting.h"
+#include "ompl_core/run/RunRecord.h"
 
 #include <ompl/util/Console.h>
 
@@ -15,6 +17,7 @@
 #include <iostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace ompl_mm::apps
 {
@@ -25,25 +28,41 @@ namespace ompl_mm::apps
 
         std::string scene;
         std::string planner;
-        long long seed{1};       ///< checked to be in [1, 2^32 - 1]
-        double timeLimit{-1.0};  ///< seconds; negative: the scene's
+        long long seed{1};                ///< checked to be in [1, 2^32 - 1]
+        double timeLimit{-1.0};           ///< seconds; negative: the scene's
+        std::vector<std::string> params;  ///< NAME=VALUE, applied after the scene's parameters
         std::string json, svg;
         bool verbose{false};
+
+        /** The --param settings. @throws ompl_core::InputError for one without NAME=. */
+        std::vector<ompl_core::ParameterSetting> parameterSettings() const
+        {
+            std::vector<ompl_core::ParameterSetting> settings;
+            for (const std::string &param : params)
+                settings.push_back(ompl_core::parseParameterOption(param));
+            return settings;
+        }
+
+        /** The run as the result record describes it, for a scene name and time limit. */
+        ompl_core::RunDescription describe(const std::string &sceneName, double timeLimitSeconds) const
+        {
+            return {sceneName, planner, static_cast<std::uint32_t>(seed), timeLimitSeconds};
+        }
     };
 
-    /** @throws InputError unless seed is in [1, 2^32 - 1] and a given time limit is positive. */
+    /** @throws ompl_core::InputError unless seed is in [1, 2^32 - 1] and a given time limit is positive. */
     inline void checkSeedAndTimeLimit(long long seed, bool timeLimitGiven, double timeLimit)
     {
         if (seed < 1 || seed > 4294967295LL)
-            throw InputError("--seed must be in [1, 4294967295], got " + std::to_string(seed));
+            throw ompl_core::InputError("--seed must be in [1, 4294967295], got " + std::to_string(seed));
         if (timeLimitGiven && !(timeLimit > 0.0))
-            throw InputError("--time-limit must be positive");
+            throw ompl_core::InputError("--time-limit must be positive");
     }
 
     /** Parses the command line into options (the app's own options are in extra, which also
         receives the common ones for --help); usage is printed first by --help.
         @returns false when the program should exit with exitCode (help shown: 0, no scene: 2).
-        @throws InputError for a bad seed or time limit; boost errors for malformed options. */
+        @throws ompl_core::InputError for a bad seed or time limit; boost errors for malformed options. */
     inline bool parseCommandLine(int argc, char **argv, const std::string &usage,
                                  const std::string &plannerHelp,
                                  boost::program_options::options_description &extra, CommonOptions &options,
@@ -54,6 +73,8 @@ namespace ompl_mm::apps
         named.add_options()("help,h", "print this help and exit")(
             "planner", po::value(&options.planner)->default_value(options.planner), plannerHelp.c_str())(
             "seed", po::value(&options.seed)->default_value(1), "random seed (positive)")(
+            "param", po::value(&options.params)->composing(),
+            "NAME=VALUE: set a declared parameter of the planner (repeatable; after the scene's)")(
             "time-limit", po::value(&options.timeLimit),
             "planning time limit in seconds (default: the scene's)")("json", po::value(&options.json),
                                                                      "write the result as JSON to this file")(
@@ -80,7 +101,8 @@ namespace ompl_mm::apps
         return true;
     }
 
-    /** An output file, or a closed stream for an empty path. @throws InputError when it cannot be written. */
+    /** An output file, or a closed stream for an empty path. @throws ompl_core::InputError when it cannot be
+     * written. */
     inline std::ofstream openOutput(const std::string &path)
     {
         std::ofstream out;
@@ -88,7 +110,7 @@ namespace ompl_mm::apps
             return out;
         out.open(path);
         if (!out)
-            throw InputError(path + ": cannot write file");
+            throw ompl_core::InputError(path + ": cannot write file");
         return out;
     }
 

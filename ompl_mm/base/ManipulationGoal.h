@@ -15,7 +15,7 @@ namespace ompl_mm
     {
     public:
         /** Reads the targets from the model's scene.
-            @throws InputError naming the scene line when a target is impossible: wrong number of
+            @throws ompl_core::InputError naming the scene line when a target is impossible: wrong number of
             joints, a joint target outside its limits, or an object target on no support surface. */
         explicit ManipulationGoal(const ompl::base::SpaceInformationPtr &si);
 

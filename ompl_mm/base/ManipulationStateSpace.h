@@ -4,7 +4,7 @@
    consecutive waypoints of a manipulation path interpolate the way the primitive moved them. */
 #pragma once
 
-#include "ompl_mm/base/ManipulationModel.h"
+#include "ompl_mm/model/ManipulationModel.h"
 
 #include <ompl/base/StateSpace.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -55,7 +55,8 @@ namespace ompl_mm
         Eigen::Vector3d toolPosition(const ompl::base::State *state) const;
 
         /** Sets every subspace's resolution so that motion checks step at most `step` in each
-            (metres for positions and prismatic joints, radians for revolute joints and yaw). */
+            (metres for positions and prismatic joints, radians for revolute joints and yaw), and
+            sets the space up again so that the new resolution is in force at once. */
         void setCollisionResolution(double step);
 
         void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t,

@@ -5,7 +5,7 @@
    adjacent links never collide with each other. */
 #pragma once
 
-#include "ompl_mm/base/ManipulationModel.h"
+#include "ompl_mm/model/ManipulationModel.h"
 
 #include <fcl/fcl.h>
 

@@ -3,7 +3,7 @@
    tool's path coloured by primitive, and pushes drawn as arrows. */
 #pragma once
 
-#include "ompl_mm/geometric/ManipulationSetup.h"
+#include "ompl_mm/setup/ManipulationSetup.h"
 
 #include <ostream>
 

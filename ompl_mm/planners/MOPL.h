@@ -48,7 +48,8 @@ namespace ompl_mm
             reproducible (ompl::RNG::setSeed seeds only generators made afterwards). */
         void setSeed(std::uint_fast32_t seed) { rng_.setLocalSeed(seed); }
 
-        /** Collision-check step along propagated motions (metres or radians); 0.05 by default. */
+        /** Collision-check step along propagated motions (metres or radians); 0.05 by default.
+            Also sets the state space's collision resolution (OMPL's motion checks) to the same step. */
         void setConnectStep(double step);
         double getConnectStep() const { return connectStep_; }
         /** A tree vertex is added every this much motion along an extension; 0.35 by default. */

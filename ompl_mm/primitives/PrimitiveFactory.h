@@ -20,11 +20,11 @@ namespace ompl_mm
         explicit PrimitiveParameters(const PrimitiveSpec &spec);
 
         /** The value of a parameter; `fallback` when absent.
-            @throws InputError when present but not a finite number. */
+            @throws ompl_core::InputError when present but not a finite number. */
         double number(const std::string &name, double fallback) const;
-        /** The value of a required parameter. @throws InputError when absent or malformed. */
+        /** The value of a required parameter. @throws ompl_core::InputError when absent or malformed. */
         double number(const std::string &name) const;
-        /** @throws InputError naming the first parameter that no number() call asked for. */
+        /** @throws ompl_core::InputError naming the first parameter that no number() call asked for. */
         void rejectUnread() const;
 
         const PrimitiveSpec &spec() const { return spec_; }
@@ -47,7 +47,7 @@ namespace ompl_mm
         void registerType(const std::string &type, Builder builder);
 
         /** Builds one primitive per spec.
-            @throws InputError at the spec's scene line for an unknown type, an unknown or bad
+            @throws ompl_core::InputError at the spec's scene line for an unknown type, an unknown or bad
             parameter, or a primitive that does not fit the robot. */
         std::vector<PrimitivePtr> build(const std::vector<PrimitiveSpec> &specs,
                                         const ManipulationStateSpace *space) const;

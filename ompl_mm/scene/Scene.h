@@ -3,6 +3,9 @@
    what SceneLoader reads from a scene file; code may also fill one directly. */
 #pragma once
 
+#include "ompl_core/io/SourceLocation.h"
+#include "ompl_core/run/ParameterSetting.h"
+
 #include <Eigen/Geometry>
 
 #include <array>
@@ -13,14 +16,6 @@
 
 namespace ompl_mm
 {
-    /** Where a value came from, so later checks can name the file and line of a bad value. */
-    struct SourceLocation
-    {
-        std::string file;  ///< scene or URDF file; empty for scenes built in code
-        int line{0};       ///< 1-based line, 0 when unknown
-        std::string str() const { return file + ":" + std::to_string(line); }
-    };
-
     /** A collision shape in URDF's vocabulary, centred at its frame (cylinders along z). */
     struct Shape
     {
@@ -45,7 +40,7 @@ namespace ompl_mm
         std::string name;
         Shape shape;
         Eigen::Isometry3d pose{Eigen::Isometry3d::Identity()};  ///< shape centre in the world
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** A horizontal rectangle on which objects may rest, optionally the top of an obstacle. */
@@ -56,7 +51,7 @@ namespace ompl_mm
         Eigen::Vector2d max{Eigen::Vector2d::Zero()};  ///< upper x, y corner, metres
         double height{0.0};                            ///< world z of the surface, metres
         std::string obstacle;  ///< obstacle whose top this is (resting objects may touch it); may be empty
-        SourceLocation where;
+        ompl_core::SourceLocation where;
 
         bool contains(double x, double y) const
         {
@@ -69,7 +64,7 @@ namespace ompl_mm
     {
         std::string name;
         Eigen::AlignedBox3d box;
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** Pose of an upright object: the centre of its base and the rotation about the vertical. */
@@ -85,7 +80,7 @@ namespace ompl_mm
         std::string name;
         Shape shape;
         ObjectPose start;
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** The robot: a URDF model placed in the world. */
@@ -96,7 +91,7 @@ namespace ompl_mm
         std::string toolLink;                                       ///< link whose origin is the tool point
         Eigen::Vector3d toolOffset{Eigen::Vector3d::Zero()};        ///< tool point in the tool link frame
         std::vector<std::pair<std::string, std::string>> allowedCollisions;  ///< link pairs never checked
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** One coordinate of a goal: a target value, or "don't care" when empty. */
@@ -110,7 +105,7 @@ namespace ompl_mm
         GoalCoordinate yaw;                      ///< radians
         double positionTolerance{0.01};          ///< metres, per coordinate
         double yawTolerance{0.05};               ///< radians
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** Goal of the robot: each joint optional, with one tolerance. */
@@ -118,7 +113,7 @@ namespace ompl_mm
     {
         std::vector<GoalCoordinate> joints;  ///< one entry per active joint; empty means "don't care"
         double tolerance{0.01};              ///< per joint, joint units (metres or radians)
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** A primitive the planner may use, with its parameters as written in the scene. */
@@ -126,15 +121,7 @@ namespace ompl_mm
     {
         std::string type;                           ///< e.g. "transit", "push_mobile"
         std::map<std::string, std::string> params;  ///< attribute name -> value text
-        SourceLocation where;
-    };
-
-    /** A planner parameter set by the scene (an OMPL declared parameter of the planner). */
-    struct PlannerParam
-    {
-        std::string name;
-        std::string value;
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** The whole problem. */
@@ -148,13 +135,13 @@ namespace ompl_mm
         std::vector<SamplingRegion> samplingRegions;
         std::vector<MovableObject> objects;
         std::vector<double> robotStart;  ///< one value per active joint
-        SourceLocation robotStartWhere;
+        ompl_core::SourceLocation robotStartWhere;
         RobotGoal robotGoal;
         std::vector<ObjectGoal> objectGoals;
         std::vector<PrimitiveSpec> primitives;
         std::string planner{"mopl"};
-        std::vector<PlannerParam> plannerParams;
-        double timeLimit{60.0};  ///< default planning time, seconds
+        std::vector<ompl_core::ParameterSetting> plannerParams;  ///< applied to the planner in order
+        double timeLimit{60.0};                                  ///< default planning time, seconds
 
         /** Index of the object called name, or -1. */
         int objectIndex(const std::string &name) const;

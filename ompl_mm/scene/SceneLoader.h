@@ -11,10 +11,10 @@
 namespace ompl_mm
 {
     /** Loads a scene file; relative paths inside it (the URDF) are relative to the file.
-        @throws InputError with "file:line: message" on any fault. */
+        @throws ompl_core::InputError with "file:line: message" on any fault. */
     Scene loadScene(const std::string &path);
 
     /** Parses scene XML text; sourceName names it in messages and baseDir resolves relative paths.
-        @throws InputError with "sourceName:line: message" on any fault. */
+        @throws ompl_core::InputError with "sourceName:line: message" on any fault. */
     Scene parseScene(const std::string &xml, const std::string &sourceName, const std::string &baseDir);
 }  // namespace ompl_mm

@@ -7,6 +7,7 @@
    Not copyable: it owns the ODE world. */
 #pragma once
 
+#include "ompl_core/run/PlannerRegistry.h"
 #include "ompl_phys/base/PhysicsStateSpace.h"
 #include "ompl_phys/control/PhysicsStatePropagator.h"
 #include "ompl_phys/control/RobotGridDecomposition.h"
@@ -24,7 +25,7 @@ namespace ompl_phys
     class PhysicsSetup : public ompl::control::SimpleSetup
     {
     public:
-        /** @throws ompl_mm::InputError naming the scene file and line when the start breaks a rule or
+        /** @throws ompl_core::InputError naming the scene file and line when the start breaks a rule or
             overlaps something, or a fixed body covers the goal. */
         explicit PhysicsSetup(const PhysicsScene &scene);
         PhysicsSetup(const PhysicsSetup &) = delete;
@@ -37,11 +38,14 @@ namespace ompl_phys
         const PhysicsStatePropagator &propagator() const { return *propagator_; }
         const std::shared_ptr<RobotGridDecomposition> &decomposition() const { return decomposition_; }
 
-        /** The names setPlannerByName() accepts: rrt, est, kpiece, sycloprrt, syclopest, pdst, sst. */
-        static const std::vector<std::string> &plannerNames();
+        /** The control planners that can plan on a PhysicsSetup: rrt, est, kpiece, sycloprrt,
+            syclopest, pdst, sst. Add your own with add(). */
+        static ompl_core::PlannerRegistry<PhysicsSetup> &plannerRegistry();
 
-        /** Allocates the named control planner with the scene's goal bias where it has one.
-            @throws ompl::Exception for an unknown name (the message lists the known ones). */
+        /** Makes the registered planner called name, sets the scene's goal bias on it through its
+            parameters when it declares "goal_bias", and makes it this setup's planner. An
+            optimisation objective set by the previous planner is cleared first.
+            @throws ompl_core::InputError for an unknown name. */
         void setPlannerByName(const std::string &name);
 
         /** Solved with an exact solution (solve() also reports approximate ones as solved). */

@@ -5,7 +5,7 @@
    one directly. Units: metres, kilograms, seconds, newtons, radians. */
 #pragma once
 
-#include "ompl_mm/scene/Scene.h"
+#include "ompl_core/io/SourceLocation.h"
 
 #include <Eigen/Geometry>
 
@@ -14,8 +14,6 @@
 
 namespace ompl_phys
 {
-    using ompl_mm::SourceLocation;
-
     /** What the manipulation knowledge says about a body. */
     enum class BodyKind
     {
@@ -66,7 +64,7 @@ namespace ompl_phys
         Eigen::Isometry3d start{Eigen::Isometry3d::Identity()};  ///< pose at the start
         double mass{0.0};                                        ///< kg; unused for fixed bodies
         PushConstraint push;                                     ///< only for constrained bodies
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** The robot: a sphere on the floor, driven by a horizontal force. */
@@ -76,7 +74,7 @@ namespace ompl_phys
         double radius{0.0};                              ///< m
         double mass{0.0};                                ///< kg
         Eigen::Vector3d start{Eigen::Vector3d::Zero()};  ///< centre at the start
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** Coulomb friction coefficients between classes of bodies (the material model). */
@@ -84,7 +82,7 @@ namespace ompl_phys
     {
         double robotFloor{0.0};  ///< the robot slides on the floor
         double defaultMu{0.7};   ///< every other pair
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** How ODE integrates and handles contacts. */
@@ -96,7 +94,7 @@ namespace ompl_phys
         unsigned int iterations{20};  ///< QuickStep iterations
         unsigned int substeps{7};     ///< ODE steps per propagation step
         double gravity{-9.81};        ///< along z, m/s^2
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** Limits of the planning problem. */
@@ -112,7 +110,7 @@ namespace ompl_phys
         unsigned int minControlSteps{1};   ///< shortest control duration, in steps
         unsigned int maxControlSteps{10};  ///< longest control duration, in steps
         double goalBias{0.05};             ///< for planners that have one
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** The goal: the robot centre within a disc. */
@@ -120,7 +118,7 @@ namespace ompl_phys
     {
         Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
         double radius{0.0};
-        SourceLocation where;
+        ompl_core::SourceLocation where;
     };
 
     /** A whole problem. */

@@ -10,10 +10,10 @@
 
 namespace ompl_phys
 {
-    /** Loads a physics scene file. @throws ompl_mm::InputError with "file:line: message". */
+    /** Loads a physics scene file. @throws ompl_core::InputError with "file:line: message". */
     PhysicsScene loadPhysicsScene(const std::string &path);
 
     /** Parses physics scene XML text; sourceName names it in messages.
-        @throws ompl_mm::InputError with "sourceName:line: message". */
+        @throws ompl_core::InputError with "sourceName:line: message". */
     PhysicsScene parsePhysicsScene(const std::string &xml, const std::string &sourceName);
 }  // namespace ompl_phys

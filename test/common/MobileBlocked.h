@@ -1,9 +1,10 @@
-// Shared test helpers: the MOBILE BLOCKED scene and fixture, state and scene editing, InputError capture.
+// Shared test helpers: the MOBILE BLOCKED scene and fixture, state and scene editing, ompl_core::InputError
+// capture.
 #pragma once
 
-#include "ompl_mm/geometric/ManipulationSetup.h"
-#include "ompl_mm/scene/InputError.h"
+#include "ompl_core/io/InputError.h"
 #include "ompl_mm/scene/SceneLoader.h"
+#include "ompl_mm/setup/ManipulationSetup.h"
 
 #include <gtest/gtest.h>
 
@@ -71,7 +72,7 @@ namespace ompl_mm::test
         space.setObjectPose(state, object, {Eigen::Vector3d(x, y, z), yaw});
     }
 
-    /** The message of the InputError that f() throws, or "" when it throws none. */
+    /** The message of the ompl_core::InputError that f() throws, or "" when it throws none. */
     template <typename F>
     std::string inputErrorOf(F &&f)
     {
@@ -79,14 +80,14 @@ namespace ompl_mm::test
         {
             f();
         }
-        catch (const InputError &e)
+        catch (const ompl_core::InputError &e)
         {
             return e.what();
         }
         return "";
     }
 
-    /** The InputError message of building a ManipulationSetup for scene, or "" when it builds. */
+    /** The ompl_core::InputError message of building a ManipulationSetup for scene, or "" when it builds. */
     inline std::string setupError(const Scene &scene)
     {
         return inputErrorOf([&] { ManipulationSetup setup(scene); });

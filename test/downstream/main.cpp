@@ -1,7 +1,7 @@
 // downstream_plan: the smallest program that uses an installed ompl_mm.
 // Usage: downstream_plan SCENE.xml; exit 0 when the scene is solved and the path re-checks.
-#include <ompl_mm/geometric/ManipulationSetup.h>
 #include <ompl_mm/scene/SceneLoader.h>
+#include <ompl_mm/setup/ManipulationSetup.h>
 
 #include <iostream>
 
@@ -39,7 +39,7 @@ int main(int argc, char **argv)
                   << setup.manipulationPath().getStateCount() << " waypoints\n";
         return 0;
     }
-    catch (const ompl::Exception &e)  // bad input: ompl_mm::InputError names file:line
+    catch (const ompl::Exception &e)  // bad input: ompl_core::InputError names file:line
     {
         std::cerr << "downstream_plan: " << e.what() << '\n';
         return 2;

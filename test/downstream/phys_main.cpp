@@ -43,7 +43,7 @@ int main(int argc, char **argv)
                   << '\n';
         return 0;
     }
-    catch (const ompl::Exception &e)  // bad input: ompl_mm::InputError names file:line
+    catch (const ompl::Exception &e)  // bad input: ompl_core::InputError names file:line
     {
         std::cerr << "downstream_phys: " << e.what() << '\n';
         return 2;

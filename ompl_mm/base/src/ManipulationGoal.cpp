@@ -1,6 +1,6 @@
 #include "ompl_mm/base/ManipulationGoal.h"
 
-#include "ompl_mm/scene/InputError.h"
+#include "ompl_core/io/InputError.h"
 
 #include <ompl/base/SpaceInformation.h>
 
@@ -51,15 +51,16 @@ namespace ompl_mm
         const Scene &scene = model.scene();
         robot_ = scene.robotGoal;
         if (!robot_.joints.empty() && robot_.joints.size() != model.dof())
-            throw InputError(robot_.where, "goal has " + std::to_string(robot_.joints.size()) +
-                                               " joint values but the robot has " +
-                                               std::to_string(model.dof()) + " moving joints");
+            throw ompl_core::InputError(robot_.where, "goal has " + std::to_string(robot_.joints.size()) +
+                                                          " joint values but the robot has " +
+                                                          std::to_string(model.dof()) + " moving joints");
         for (std::size_t j = 0; j < robot_.joints.size(); ++j)
         {
             const Joint &joint = model.robot().variableJoint(j);
             if (robot_.joints[j] && (*robot_.joints[j] < joint.lower || *robot_.joints[j] > joint.upper))
-                throw InputError(robot_.where, "goal value " + std::to_string(*robot_.joints[j]) +
-                                                   " of joint '" + joint.name + "' is outside its limits");
+                throw ompl_core::InputError(robot_.where, "goal value " + std::to_string(*robot_.joints[j]) +
+                                                              " of joint '" + joint.name +
+                                                              "' is outside its limits");
         }
 
         objects_.assign(model.objectCount(), nullptr);
@@ -67,11 +68,12 @@ namespace ompl_mm
         {
             const int index = scene.objectIndex(goal.object);
             if (index < 0)
-                throw InputError(goal.where, "goal names unknown object '" + goal.object + "'");
+                throw ompl_core::InputError(goal.where, "goal names unknown object '" + goal.object + "'");
             objects_[index] = &goal;
             if (surfacesFor(&goal, scene).empty())
-                throw InputError(goal.where, "goal of object '" + goal.object +
-                                                 "' lies on no support surface, so it can never rest there");
+                throw ompl_core::InputError(goal.where,
+                                            "goal of object '" + goal.object +
+                                                "' lies on no support surface, so it can never rest there");
         }
     }
 

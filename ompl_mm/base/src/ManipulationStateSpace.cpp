@@ -170,6 +170,7 @@ namespace ompl_mm
             const ob::StateSpacePtr &space = getSubspace(i);
             space->setLongestValidSegmentFraction(std::min(1.0, step / space->getMaximumExtent()));
         }
+        setup();  // the longest valid segment is computed here
     }
 
     bool ManipulationStateSpace::isCarried(const ob::State *from, const ob::State *to,

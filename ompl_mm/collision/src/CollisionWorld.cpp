@@ -1,6 +1,6 @@
 #include "ompl_mm/collision/CollisionWorld.h"
 
-#include "ompl_mm/scene/InputError.h"
+#include "ompl_core/io/InputError.h"
 
 #include <algorithm>
 
@@ -108,8 +108,8 @@ namespace ompl_mm
                 if (scene.obstacles[i].name == s.obstacle)
                     index = static_cast<int>(i);
             if (!s.obstacle.empty() && index < 0)
-                throw InputError(s.where,
-                                 "surface '" + s.name + "' names unknown obstacle '" + s.obstacle + "'");
+                throw ompl_core::InputError(
+                    s.where, "surface '" + s.name + "' names unknown obstacle '" + s.obstacle + "'");
             surfaceObstacle_.push_back(index);
         }
 

@@ -1,6 +1,6 @@
 #include "ompl_mm/io/SceneSvg.h"
 
-#include "ompl_mm/io/TextFormat.h"
+#include "ompl_core/io/TextFormat.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Exception.h>
@@ -376,7 +376,8 @@ namespace ompl_mm
         void writeFootprint(std::ostream &out, const Frame &frame, const Footprint &f,
                             const std::string &attributes, const std::string &name)
         {
-            const std::string title = name.empty() ? "" : "<title>" + xmlEscaped(name) + "</title>";
+            const std::string title =
+                name.empty() ? "" : "<title>" + ompl_core::xmlEscaped(name) + "</title>";
             if (f.corners.empty())
                 writeCircle(out, frame.map(f.centre), f.radius * frame.scale, attributes, title);
             else
@@ -388,7 +389,7 @@ namespace ompl_mm
                        const std::string &attributes)
         {
             out << "<text x=\"" << num(at.x()) << "\" y=\"" << num(at.y()) << "\" " << attributes << ">"
-                << xmlEscaped(text) << "</text>\n";
+                << ompl_core::xmlEscaped(text) << "</text>\n";
         }
 
         void writeHeader(std::ostream &out, const Frame &frame)

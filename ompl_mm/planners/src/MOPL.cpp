@@ -53,6 +53,7 @@ namespace ompl_mm
         specs_.approximateSolutions = false;
         specs_.directed = true;
         declareParameters();
+        setConnectStep(connectStep_);
         addPlannerProgressProperty("iterations INTEGER",
                                    [this] { return std::to_string(statistics_.iterations); });
         addPlannerProgressProperty("start tree vertices INTEGER",
@@ -110,6 +111,8 @@ namespace ompl_mm
         if (!(step > 0.0) || !std::isfinite(step))
             throw ompl::Exception("MOPL", "connect_step must be positive, got " + std::to_string(step));
         connectStep_ = step;
+        // OMPL's motion checks (PathGeometric::check, the simplifier) step as finely as MOPL's walks
+        std::static_pointer_cast<ManipulationStateSpace>(si_->getStateSpace())->setCollisionResolution(step);
     }
 
     void MOPL::setVertexStep(double step)

@@ -1,8 +1,8 @@
 #include "ompl_mm/primitives/PrimitiveFactory.h"
 
+#include "ompl_core/io/InputError.h"
 #include "ompl_mm/primitives/PushMobile.h"
 #include "ompl_mm/primitives/Transit.h"
-#include "ompl_mm/scene/InputError.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,15 +28,17 @@ namespace ompl_mm
             used = 0;
         }
         if (used == 0 || used != it->second.size() || !std::isfinite(value))
-            throw InputError(spec_.where, "<" + spec_.type + "> parameter '" + name +
-                                              "' must be a finite number, got '" + it->second + "'");
+            throw ompl_core::InputError(spec_.where, "<" + spec_.type + "> parameter '" + name +
+                                                         "' must be a finite number, got '" + it->second +
+                                                         "'");
         return value;
     }
 
     double PrimitiveParameters::number(const std::string &name) const
     {
         if (spec_.params.count(name) == 0)
-            throw InputError(spec_.where, "<" + spec_.type + "> needs the parameter '" + name + "'");
+            throw ompl_core::InputError(spec_.where,
+                                        "<" + spec_.type + "> needs the parameter '" + name + "'");
         return number(name, 0.0);
     }
 
@@ -44,7 +46,8 @@ namespace ompl_mm
     {
         for (const auto &[name, value] : spec_.params)
             if (std::find(read_.begin(), read_.end(), name) == read_.end())
-                throw InputError(spec_.where, "unknown parameter '" + name + "' for <" + spec_.type + ">");
+                throw ompl_core::InputError(spec_.where,
+                                            "unknown parameter '" + name + "' for <" + spec_.type + ">");
     }
 
     PrimitiveFactory::PrimitiveFactory()
@@ -72,20 +75,21 @@ namespace ompl_mm
                 std::string known;
                 for (const auto &entry : builders_)
                     known += (known.empty() ? "" : ", ") + entry.first;
-                throw InputError(spec.where, "unknown primitive <" + spec.type + "> (known: " + known + ")");
+                throw ompl_core::InputError(spec.where,
+                                            "unknown primitive <" + spec.type + "> (known: " + known + ")");
             }
             const PrimitiveParameters params(spec);
             try
             {
                 primitives.push_back(it->second(space, params));
             }
-            catch (const InputError &)
+            catch (const ompl_core::InputError &)
             {
                 throw;
             }
             catch (const ompl::Exception &e)
             {
-                throw InputError(spec.where, e.what());
+                throw ompl_core::InputError(spec.where, e.what());
             }
             params.rejectUnread();
         }

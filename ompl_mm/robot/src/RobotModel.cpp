@@ -14,7 +14,7 @@
 #include <tuple>
 #include <utility>
 
-#include "ompl_mm/scene/InputError.h"
+#include "ompl_core/io/InputError.h"
 
 namespace ompl_mm
 {
@@ -33,17 +33,18 @@ namespace ompl_mm
                 return it == jointLines.end() ? 0 : it->second;
             }
 
-            InputError linkError(const std::string &link, const std::string &message) const
+            ompl_core::InputError linkError(const std::string &link, const std::string &message) const
             {
                 auto it = linkLines.find(link);
-                return InputError(SourceLocation{name, it == linkLines.end() ? 0 : it->second},
-                                  "link '" + link + "': " + message);
+                return ompl_core::InputError(
+                    ompl_core::SourceLocation{name, it == linkLines.end() ? 0 : it->second},
+                    "link '" + link + "': " + message);
             }
 
-            InputError jointError(const std::string &joint, const std::string &message) const
+            ompl_core::InputError jointError(const std::string &joint, const std::string &message) const
             {
-                return InputError(SourceLocation{name, jointLine(joint)},
-                                  "joint '" + joint + "': " + message);
+                return ompl_core::InputError(ompl_core::SourceLocation{name, jointLine(joint)},
+                                             "joint '" + joint + "': " + message);
             }
         };
 
@@ -61,11 +62,13 @@ namespace ompl_mm
             UrdfSource source{sourceName, {}, {}};
             tinyxml2::XMLDocument doc;
             if (doc.Parse(urdf.c_str(), urdf.size()) != tinyxml2::XML_SUCCESS)
-                throw InputError(SourceLocation{sourceName, doc.ErrorLineNum()},
-                                 std::string("invalid URDF: malformed XML (") + doc.ErrorName() + ")");
+                throw ompl_core::InputError(
+                    ompl_core::SourceLocation{sourceName, doc.ErrorLineNum()},
+                    std::string("invalid URDF: malformed XML (") + doc.ErrorName() + ")");
             const tinyxml2::XMLElement *robot = doc.FirstChildElement("robot");
             if (robot == nullptr)
-                throw InputError(SourceLocation{sourceName, 0}, "invalid URDF: no <robot> element");
+                throw ompl_core::InputError(ompl_core::SourceLocation{sourceName, 0},
+                                            "invalid URDF: no <robot> element");
             for (auto *e = robot->FirstChildElement("link"); e != nullptr; e = e->NextSiblingElement("link"))
                 if (const char *name = e->Attribute("name"))
                     source.linkLines.emplace(name, e->GetLineNum());
@@ -237,7 +240,7 @@ namespace ompl_mm
     {
         std::ifstream in(path);
         if (!in)
-            throw InputError(SourceLocation{path, 0}, "cannot read URDF file");
+            throw ompl_core::InputError(ompl_core::SourceLocation{path, 0}, "cannot read URDF file");
         std::ostringstream text;
         text << in.rdbuf();
         return fromUrdfString(text.str(), path);
@@ -253,10 +256,11 @@ namespace ompl_mm
         }
         catch (const std::exception &e)
         {
-            throw InputError(SourceLocation{sourceName, 0}, std::string("invalid URDF: ") + e.what());
+            throw ompl_core::InputError(ompl_core::SourceLocation{sourceName, 0},
+                                        std::string("invalid URDF: ") + e.what());
         }
         if (!model || !model->getRoot())
-            throw InputError(SourceLocation{sourceName, 0}, "invalid URDF");
+            throw ompl_core::InputError(ompl_core::SourceLocation{sourceName, 0}, "invalid URDF");
 
         RobotModel robot;
         robot.name_ = model->getName();
@@ -295,7 +299,7 @@ namespace ompl_mm
         for (std::size_t i = 0; i < links_.size(); ++i)
             if (links_[i].name == name)
                 return static_cast<int>(i);
-        throw InputError("robot '" + name_ + "' has no link '" + name + "'");
+        throw ompl_core::InputError("robot '" + name_ + "' has no link '" + name + "'");
     }
 
     bool RobotModel::isInSubtree(int descendant, int ancestor) const

@@ -8,8 +8,8 @@
 #include <map>
 #include <system_error>
 
-#include "ompl_mm/scene/InputError.h"
-#include "ompl_mm/scene/XmlReading.h"
+#include "ompl_core/io/InputError.h"
+#include "ompl_core/io/XmlReading.h"
 
 namespace ompl_mm
 {
@@ -21,47 +21,25 @@ namespace ompl_mm
             less than this, metres (the tolerance of the original MOPL implementation). */
         constexpr double RESTING_TOLERANCE = 1e-4;
 
-        /** For each name or tag already used, where it was first used. */
-        using FirstUses = std::map<std::string, SourceLocation>;
-
-        /** Records that element uses name. @throws InputError with message when it was used before. */
-        void claimName(FirstUses &uses, const XmlElement &element, const std::string &name,
-                       const std::string &message)
-        {
-            const auto [first, inserted] = uses.emplace(name, element.where());
-            if (!inserted)
-                element.fail("name", message + " (first at line " + std::to_string(first->second.line) + ")");
-        }
-
-        /** Records that child appears in parent. @throws InputError when it appeared before. */
-        void claimOnce(FirstUses &uses, const XmlElement &child, const XmlElement &parent)
-        {
-            const auto [first, inserted] = uses.emplace(child.name(), child.where());
-            if (!inserted)
-                child.fail("second " + child.tag() + " in " + parent.tag() +
-                           ", only one is allowed (first at line " + std::to_string(first->second.line) +
-                           ")");
-        }
-
-        Shape readShape(const XmlElement &element)
+        Shape readShape(const ompl_core::XmlElement &element)
         {
             Shape shape;
             if (element.name() == "box")
             {
-                checkLeaf(element, {"size"});
+                ompl_core::checkLeaf(element, {"size"});
                 shape.kind = Shape::Kind::Box;
                 shape.boxSize = element.positiveVector3("size");
             }
             else if (element.name() == "cylinder")
             {
-                checkLeaf(element, {"radius", "length"});
+                ompl_core::checkLeaf(element, {"radius", "length"});
                 shape.kind = Shape::Kind::Cylinder;
                 shape.radius = element.positive("radius");
                 shape.length = element.positive("length");
             }
             else
             {
-                checkLeaf(element, {"radius"});
+                ompl_core::checkLeaf(element, {"radius"});
                 shape.kind = Shape::Kind::Sphere;
                 shape.radius = element.positive("radius");
             }
@@ -69,7 +47,8 @@ namespace ompl_mm
         }
 
         /** The one shape among the shape elements of a body. */
-        Shape readOnlyShape(const XmlElement &body, const std::vector<XmlElement> &shapes)
+        Shape readOnlyShape(const ompl_core::XmlElement &body,
+                            const std::vector<ompl_core::XmlElement> &shapes)
         {
             if (shapes.size() != 1)
                 (shapes.empty() ? body : shapes[1])
@@ -89,61 +68,56 @@ namespace ompl_mm
                 scene_.file = file;
             }
 
-            Scene parse(const XmlElement &root);
+            Scene parse(const ompl_core::XmlElement &root);
 
         private:
-            void readRobot(const XmlElement &element);
-            std::string resolveUrdf(const XmlElement &element) const;
-            void readObstacle(const XmlElement &element);
-            void readSurface(const XmlElement &element);
-            void readRegion(const XmlElement &element);
-            void readObject(const XmlElement &element);
-            void readStart(const XmlElement &element);
-            void readStartObject(const XmlElement &element, FirstUses &started);
-            void checkResting(const XmlElement &element, const MovableObject &object) const;
-            void readGoal(const XmlElement &element);
-            void readGoalObject(const XmlElement &element, FirstUses &goals);
-            void readPrimitives(const XmlElement &element);
-            void readPlanner(const XmlElement &element);
+            void readRobot(const ompl_core::XmlElement &element);
+            std::string resolveUrdf(const ompl_core::XmlElement &element) const;
+            void readObstacle(const ompl_core::XmlElement &element);
+            void readSurface(const ompl_core::XmlElement &element);
+            void readRegion(const ompl_core::XmlElement &element);
+            void readObject(const ompl_core::XmlElement &element);
+            void readStart(const ompl_core::XmlElement &element);
+            void readStartObject(const ompl_core::XmlElement &element, ompl_core::FirstUses &started);
+            void checkResting(const ompl_core::XmlElement &element, const MovableObject &object) const;
+            void readGoal(const ompl_core::XmlElement &element);
+            void readGoalObject(const ompl_core::XmlElement &element, ompl_core::FirstUses &goals);
+            void readPrimitives(const ompl_core::XmlElement &element);
+            void readPlanner(const ompl_core::XmlElement &element);
 
             std::string baseDir_;
             Scene scene_;
-            FirstUses bodies_;  ///< obstacles and objects share one name space, the collision world
-            FirstUses surfaces_;
-            FirstUses regions_;
+            ompl_core::FirstUses
+                bodies_;  ///< obstacles and objects share one name space, the collision world
+            ompl_core::FirstUses surfaces_;
+            ompl_core::FirstUses regions_;
         };
 
-        Scene SceneParser::parse(const XmlElement &root)
+        Scene SceneParser::parse(const ompl_core::XmlElement &root)
         {
             root.checkAttributes({"name", "time_limit"});
             scene_.name = root.text("name", fs::path(scene_.file).stem().string());
             if (root.has("time_limit"))
                 scene_.timeLimit = root.positive("time_limit");
 
-            std::map<std::string, std::vector<XmlElement>> byTag;
-            FirstUses singles;
-            for (const XmlElement &child : root.children({"robot", "obstacle", "surface", "region", "object",
-                                                          "start", "goal", "primitives", "planner"}))
-            {
-                const std::string tag = child.name();
-                if (tag != "obstacle" && tag != "surface" && tag != "region" && tag != "object")
-                    claimOnce(singles, child, root);
-                byTag[tag].push_back(child);
-            }
-            for (const char *tag : {"robot", "surface", "start", "goal", "primitives"})
+            auto byTag = ompl_core::childrenByTag(root,
+                                                  {"robot", "obstacle", "surface", "region", "object",
+                                                   "start", "goal", "primitives", "planner"},
+                                                  {"obstacle", "surface", "region", "object"}, {"robot"});
+            if (byTag["surface"].empty())
+                root.fail("missing <surface> in <scene> (at least one support surface is needed)");
+            for (const char *tag : {"start", "goal", "primitives"})
                 if (byTag[tag].empty())
-                    root.fail(
-                        "missing <" + std::string(tag) + "> in <scene>" +
-                        (tag == std::string("surface") ? " (at least one support surface is needed)" : ""));
+                    root.fail("missing <" + std::string(tag) + "> in <scene>");
 
             readRobot(byTag["robot"].front());
-            for (const XmlElement &element : byTag["obstacle"])
+            for (const ompl_core::XmlElement &element : byTag["obstacle"])
                 readObstacle(element);
-            for (const XmlElement &element : byTag["surface"])
+            for (const ompl_core::XmlElement &element : byTag["surface"])
                 readSurface(element);
-            for (const XmlElement &element : byTag["region"])
+            for (const ompl_core::XmlElement &element : byTag["region"])
                 readRegion(element);
-            for (const XmlElement &element : byTag["object"])
+            for (const ompl_core::XmlElement &element : byTag["object"])
                 readObject(element);
             readStart(byTag["start"].front());
             readGoal(byTag["goal"].front());
@@ -153,34 +127,35 @@ namespace ompl_mm
             return std::move(scene_);
         }
 
-        void SceneParser::readRobot(const XmlElement &element)
+        void SceneParser::readRobot(const ompl_core::XmlElement &element)
         {
             element.checkAttributes({"urdf", "tool_link"});
             RobotSpec &robot = scene_.robot;
             robot.where = element.where();
             robot.urdfFile = resolveUrdf(element);
             robot.toolLink = element.text("tool_link");
-            FirstUses singles;
-            for (const XmlElement &child : element.children({"origin", "tool_offset", "allow_collision"}))
+            ompl_core::FirstUses singles;
+            for (const ompl_core::XmlElement &child :
+                 element.children({"origin", "tool_offset", "allow_collision"}))
             {
                 if (child.name() == "allow_collision")
                 {
-                    checkLeaf(child, {"link1", "link2"});
+                    ompl_core::checkLeaf(child, {"link1", "link2"});
                     robot.allowedCollisions.emplace_back(child.text("link1"), child.text("link2"));
                     continue;
                 }
-                claimOnce(singles, child, element);
+                ompl_core::claimOnce(singles, child, element);
                 if (child.name() == "origin")
-                    robot.basePose = readOrigin(child);
+                    robot.basePose = ompl_core::readOrigin(child);
                 else
                 {
-                    checkLeaf(child, {"xyz"});
+                    ompl_core::checkLeaf(child, {"xyz"});
                     robot.toolOffset = child.vector3("xyz");
                 }
             }
         }
 
-        std::string SceneParser::resolveUrdf(const XmlElement &element) const
+        std::string SceneParser::resolveUrdf(const ompl_core::XmlElement &element) const
         {
             const std::string urdf = element.text("urdf");
             fs::path path(urdf);
@@ -193,36 +168,38 @@ namespace ompl_mm
             return (error ? path : absolute).lexically_normal().string();
         }
 
-        void SceneParser::readObstacle(const XmlElement &element)
+        void SceneParser::readObstacle(const ompl_core::XmlElement &element)
         {
             element.checkAttributes({"name"});
             Obstacle obstacle;
             obstacle.name = element.text("name");
             obstacle.where = element.where();
-            claimName(bodies_, element, obstacle.name, "duplicate name '" + obstacle.name + "'");
-            std::vector<XmlElement> shapes;
-            FirstUses singles;
-            for (const XmlElement &child : element.children({"origin", "box", "cylinder", "sphere"}))
+            ompl_core::claimName(bodies_, element, obstacle.name, "duplicate name '" + obstacle.name + "'");
+            std::vector<ompl_core::XmlElement> shapes;
+            ompl_core::FirstUses singles;
+            for (const ompl_core::XmlElement &child :
+                 element.children({"origin", "box", "cylinder", "sphere"}))
             {
                 if (child.name() != "origin")
                 {
                     shapes.push_back(child);
                     continue;
                 }
-                claimOnce(singles, child, element);
-                obstacle.pose = readOrigin(child);
+                ompl_core::claimOnce(singles, child, element);
+                obstacle.pose = ompl_core::readOrigin(child);
             }
             obstacle.shape = readOnlyShape(element, shapes);
             scene_.obstacles.push_back(obstacle);
         }
 
-        void SceneParser::readSurface(const XmlElement &element)
+        void SceneParser::readSurface(const ompl_core::XmlElement &element)
         {
-            checkLeaf(element, {"name", "height", "min", "max", "obstacle"});
+            ompl_core::checkLeaf(element, {"name", "height", "min", "max", "obstacle"});
             SupportSurface surface;
             surface.name = element.text("name");
             surface.where = element.where();
-            claimName(surfaces_, element, surface.name, "duplicate surface name '" + surface.name + "'");
+            ompl_core::claimName(surfaces_, element, surface.name,
+                                 "duplicate surface name '" + surface.name + "'");
             surface.height = element.number("height");
             surface.min = element.vector2("min");
             surface.max = element.vector2("max");
@@ -237,13 +214,14 @@ namespace ompl_mm
             scene_.surfaces.push_back(surface);
         }
 
-        void SceneParser::readRegion(const XmlElement &element)
+        void SceneParser::readRegion(const ompl_core::XmlElement &element)
         {
-            checkLeaf(element, {"name", "min", "max"});
+            ompl_core::checkLeaf(element, {"name", "min", "max"});
             SamplingRegion region;
             region.name = element.text("name");
             region.where = element.where();
-            claimName(regions_, element, region.name, "duplicate region name '" + region.name + "'");
+            ompl_core::claimName(regions_, element, region.name,
+                                 "duplicate region name '" + region.name + "'");
             const Eigen::Vector3d min = element.vector3("min");
             const Eigen::Vector3d max = element.vector3("max");
             if ((min.array() >= max.array()).any())
@@ -252,31 +230,31 @@ namespace ompl_mm
             scene_.samplingRegions.push_back(region);
         }
 
-        void SceneParser::readObject(const XmlElement &element)
+        void SceneParser::readObject(const ompl_core::XmlElement &element)
         {
             element.checkAttributes({"name"});
             MovableObject object;
             object.name = element.text("name");
             object.where = element.where();
-            claimName(bodies_, element, object.name, "duplicate name '" + object.name + "'");
+            ompl_core::claimName(bodies_, element, object.name, "duplicate name '" + object.name + "'");
             object.shape = readOnlyShape(element, element.children({"box", "cylinder", "sphere"}));
             scene_.objects.push_back(object);
         }
 
-        void SceneParser::readStart(const XmlElement &element)
+        void SceneParser::readStart(const ompl_core::XmlElement &element)
         {
             element.checkAttributes({});
-            FirstUses singles;
-            FirstUses started;
-            for (const XmlElement &child : element.children({"robot", "object"}))
+            ompl_core::FirstUses singles;
+            ompl_core::FirstUses started;
+            for (const ompl_core::XmlElement &child : element.children({"robot", "object"}))
             {
                 if (child.name() == "object")
                 {
                     readStartObject(child, started);
                     continue;
                 }
-                claimOnce(singles, child, element);
-                checkLeaf(child, {"joints"});
+                ompl_core::claimOnce(singles, child, element);
+                ompl_core::checkLeaf(child, {"joints"});
                 scene_.robotStart = child.numbers("joints", 0);
                 scene_.robotStartWhere = child.where();
             }
@@ -284,28 +262,29 @@ namespace ompl_mm
                 element.fail("missing <robot joints=\"...\"/> in <start>");
             for (const MovableObject &object : scene_.objects)
                 if (started.count(object.name) == 0)
-                    throw InputError(object.where, "object '" + object.name +
-                                                       "' has no start: add <object name=\"" + object.name +
-                                                       "\" xyz=\"...\"/> to <start> (line " +
-                                                       std::to_string(element.where().line) + ")");
+                    throw ompl_core::InputError(
+                        object.where, "object '" + object.name + "' has no start: add <object name=\"" +
+                                          object.name + "\" xyz=\"...\"/> to <start> (line " +
+                                          std::to_string(element.where().line) + ")");
         }
 
-        void SceneParser::readStartObject(const XmlElement &element, FirstUses &started)
+        void SceneParser::readStartObject(const ompl_core::XmlElement &element, ompl_core::FirstUses &started)
         {
-            checkLeaf(element, {"name", "xyz", "yaw"});
+            ompl_core::checkLeaf(element, {"name", "xyz", "yaw"});
             const std::string name = element.text("name");
             const int index = scene_.objectIndex(name);
             if (index < 0)
                 element.fail("name",
                              "start for unknown object '" + name + "' (no <object name=\"" + name + "\">)");
-            claimName(started, element, name, "second start for object '" + name + "'");
+            ompl_core::claimName(started, element, name, "second start for object '" + name + "'");
             MovableObject &object = scene_.objects[index];
             object.start.position = element.vector3("xyz");
             object.start.yaw = element.angle("yaw", 0.0);
             checkResting(element, object);
         }
 
-        void SceneParser::checkResting(const XmlElement &element, const MovableObject &object) const
+        void SceneParser::checkResting(const ompl_core::XmlElement &element,
+                                       const MovableObject &object) const
         {
             const Eigen::Vector3d &p = object.start.position;
             for (const SupportSurface &surface : scene_.surfaces)
@@ -317,23 +296,23 @@ namespace ompl_mm
                              "1e-4) and x, y lie inside it");
         }
 
-        void SceneParser::readGoal(const XmlElement &element)
+        void SceneParser::readGoal(const ompl_core::XmlElement &element)
         {
             element.checkAttributes({});
-            const std::vector<XmlElement> children = element.children({"robot", "object"});
+            const std::vector<ompl_core::XmlElement> children = element.children({"robot", "object"});
             if (children.empty())
                 element.fail("<goal> needs at least one <robot> or <object> child");
-            FirstUses singles;
-            FirstUses goals;
-            for (const XmlElement &child : children)
+            ompl_core::FirstUses singles;
+            ompl_core::FirstUses goals;
+            for (const ompl_core::XmlElement &child : children)
             {
                 if (child.name() == "object")
                 {
                     readGoalObject(child, goals);
                     continue;
                 }
-                claimOnce(singles, child, element);
-                checkLeaf(child, {"joints", "tolerance"});
+                ompl_core::claimOnce(singles, child, element);
+                ompl_core::checkLeaf(child, {"joints", "tolerance"});
                 RobotGoal &goal = scene_.robotGoal;
                 goal.joints = child.coordinates("joints", 0);
                 goal.tolerance = child.nonNegative("tolerance", goal.tolerance);
@@ -341,15 +320,15 @@ namespace ompl_mm
             }
         }
 
-        void SceneParser::readGoalObject(const XmlElement &element, FirstUses &goals)
+        void SceneParser::readGoalObject(const ompl_core::XmlElement &element, ompl_core::FirstUses &goals)
         {
-            checkLeaf(element, {"name", "xyz", "yaw", "tolerance", "yaw_tolerance"});
+            ompl_core::checkLeaf(element, {"name", "xyz", "yaw", "tolerance", "yaw_tolerance"});
             ObjectGoal goal;
             goal.object = element.text("name");
             if (scene_.objectIndex(goal.object) < 0)
                 element.fail("name", "goal for unknown object '" + goal.object + "' (no <object name=\"" +
                                          goal.object + "\">)");
-            claimName(goals, element, goal.object, "second goal for object '" + goal.object + "'");
+            ompl_core::claimName(goals, element, goal.object, "second goal for object '" + goal.object + "'");
             const std::vector<GoalCoordinate> xyz = element.coordinates("xyz", 3);
             std::copy(xyz.begin(), xyz.end(), goal.position.begin());
             goal.yaw = element.angleOrAny("yaw", std::nullopt);
@@ -359,10 +338,10 @@ namespace ompl_mm
             scene_.objectGoals.push_back(goal);
         }
 
-        void SceneParser::readPrimitives(const XmlElement &element)
+        void SceneParser::readPrimitives(const ompl_core::XmlElement &element)
         {
             element.checkAttributes({});
-            for (const XmlElement &child : element.children())
+            for (const ompl_core::XmlElement &child : element.children())
             {
                 // a primitive's parameters are checked by the primitive itself
                 child.children({});
@@ -377,19 +356,19 @@ namespace ompl_mm
                 element.fail("<primitives> needs at least one primitive, e.g. <transit/>");
         }
 
-        void SceneParser::readPlanner(const XmlElement &element)
+        void SceneParser::readPlanner(const ompl_core::XmlElement &element)
         {
             element.checkAttributes({"type"});
             scene_.planner = element.text("type", scene_.planner);
-            FirstUses names;
-            for (const XmlElement &child : element.children({"param"}))
+            ompl_core::FirstUses names;
+            for (const ompl_core::XmlElement &child : element.children({"param"}))
             {
-                checkLeaf(child, {"name", "value"});
-                PlannerParam param;
+                ompl_core::checkLeaf(child, {"name", "value"});
+                ompl_core::ParameterSetting param;
                 param.name = child.text("name");
                 param.value = child.text("value");
                 param.where = child.where();
-                claimName(names, child, param.name, "second <param> '" + param.name + "'");
+                ompl_core::claimName(names, child, param.name, "second <param> '" + param.name + "'");
                 scene_.plannerParams.push_back(param);
             }
         }
@@ -397,12 +376,14 @@ namespace ompl_mm
 
     Scene loadScene(const std::string &path)
     {
-        return parseScene(readInputFile(path, "scene file"), path, fs::path(path).parent_path().string());
+        return parseScene(ompl_core::readInputFile(path, "scene file"), path,
+                          fs::path(path).parent_path().string());
     }
 
     Scene parseScene(const std::string &xml, const std::string &sourceName, const std::string &baseDir)
     {
         tinyxml2::XMLDocument document;
-        return SceneParser(sourceName, baseDir).parse(parseRootElement(document, xml, sourceName, "scene"));
+        return SceneParser(sourceName, baseDir)
+            .parse(ompl_core::parseRootElement(document, xml, sourceName, "scene"));
     }
 }  // namespace ompl_mm

@@ -1,6 +1,7 @@
 #include "ompl_phys/control/PhysicsSetup.h"
 
-#include "ompl_mm/scene/InputError.h"
+#include "ompl_core/io/InputError.h"
+#include "ompl_core/run/ParameterSetting.h"
 #include "ompl_phys/base/PhysicsGoal.h"
 #include "ompl_phys/base/PhysicsValidityChecker.h"
 #include "ompl_phys/base/RobotProjection.h"
@@ -15,6 +16,8 @@
 #include <ompl/control/planners/syclop/SyclopRRT.h>
 #include <ompl/control/spaces/RealVectorControlSpace.h>
 
+#include <iomanip>
+#include <locale>
 #include <sstream>
 
 namespace ompl_phys
@@ -36,21 +39,13 @@ namespace ompl_phys
             return controls;
         }
 
-        /** A planner of type P with the given goal bias. */
-        template <typename P>
-        ompl::base::PlannerPtr withGoalBias(const oc::SpaceInformationPtr &si, double bias)
+        /** A double as text that converts back to the same double. */
+        std::string exactText(double value)
         {
-            auto planner = std::make_shared<P>(si);
-            planner->setGoalBias(bias);
-            return planner;
-        }
-
-        std::string joinNames(const std::vector<std::string> &names)
-        {
-            std::string joined;
-            for (const std::string &name : names)
-                joined += (joined.empty() ? "" : ", ") + name;
-            return joined;
+            std::ostringstream out;
+            out.imbue(std::locale::classic());
+            out << std::setprecision(17) << value;
+            return out.str();
         }
     }  // namespace
 
@@ -98,58 +93,71 @@ namespace ompl_phys
         // touches first: their message names the body
         for (std::size_t body : world_->touches())
             if (knowledge_->checkTouches({body}, start) != Violation::None)
-                throw ompl_mm::InputError(
+                throw ompl_core::InputError(
                     s.bodies[body].where,
                     "the robot starts touching '" + s.bodies[body].name + "', which it must not touch");
         const Violation violation = knowledge_->checkStates(start);
         if (violation != Violation::None)
-            throw ompl_mm::InputError(s.robot.where,
-                                      std::string("the start breaks a rule: ") + violationName(violation));
+            throw ompl_core::InputError(s.robot.where,
+                                        std::string("the start breaks a rule: ") + violationName(violation));
         if (depth > START_PENETRATION_TOLERANCE)
         {
             std::ostringstream message;
             message << "bodies overlap at the start (" << depth << " m deep)";
-            throw ompl_mm::InputError(s.robot.where, message.str());
+            throw ompl_core::InputError(s.robot.where, message.str());
         }
         for (std::size_t body : knowledge_->fixedBodiesOnGoal())
-            throw ompl_mm::InputError(s.goal.where, "the goal cannot be reached: fixed body '" +
-                                                        s.bodies[body].name + "' covers its centre");
+            throw ompl_core::InputError(s.goal.where, "the goal cannot be reached: fixed body '" +
+                                                          s.bodies[body].name + "' covers its centre");
     }
 
-    const std::vector<std::string> &PhysicsSetup::plannerNames()
+    ompl_core::PlannerRegistry<PhysicsSetup> &PhysicsSetup::plannerRegistry()
     {
-        static const std::vector<std::string> names = {"rrt",       "est",  "kpiece", "sycloprrt",
-                                                       "syclopest", "pdst", "sst"};
-        return names;
+        static ompl_core::PlannerRegistry<PhysicsSetup> registry = []
+        {
+            ompl_core::PlannerRegistry<PhysicsSetup> planners;
+            planners.add("rrt", "control-based RRT",
+                         [](PhysicsSetup &s) { return std::make_shared<oc::RRT>(s.getSpaceInformation()); });
+            planners.add("est", "control-based EST",
+                         [](PhysicsSetup &s) { return std::make_shared<oc::EST>(s.getSpaceInformation()); });
+            planners.add("kpiece", "KPIECE1",
+                         [](PhysicsSetup &s)
+                         { return std::make_shared<oc::KPIECE1>(s.getSpaceInformation()); });
+            planners.add(
+                "sycloprrt", "SyCLoP with RRT on the robot grid",
+                [](PhysicsSetup &s)
+                { return std::make_shared<oc::SyclopRRT>(s.getSpaceInformation(), s.decomposition()); });
+            planners.add(
+                "syclopest", "SyCLoP with EST on the robot grid",
+                [](PhysicsSetup &s)
+                { return std::make_shared<oc::SyclopEST>(s.getSpaceInformation(), s.decomposition()); });
+            planners.add("pdst", "PDST",
+                         [](PhysicsSetup &s) { return std::make_shared<oc::PDST>(s.getSpaceInformation()); });
+            planners.add("sst", "SST, stopping at its first solution",
+                         [](PhysicsSetup &s)
+                         {
+                             // SST optimises until its time is up unless its objective is satisfied:
+                             // any solution is good enough here, as for the other planners
+                             auto objective = std::make_shared<ompl::base::PathLengthOptimizationObjective>(
+                                 s.getSpaceInformation());
+                             objective->setCostThreshold(objective->infiniteCost());
+                             s.getProblemDefinition()->setOptimizationObjective(objective);
+                             return std::make_shared<oc::SST>(s.getSpaceInformation());
+                         });
+            return planners;
+        }();
+        return registry;
     }
 
     void PhysicsSetup::setPlannerByName(const std::string &name)
     {
-        const double bias = world_->scene().limits.goalBias;
-        if (name == "rrt")
-            setPlanner(withGoalBias<oc::RRT>(si_, bias));
-        else if (name == "est")
-            setPlanner(withGoalBias<oc::EST>(si_, bias));
-        else if (name == "kpiece")
-            setPlanner(withGoalBias<oc::KPIECE1>(si_, bias));
-        else if (name == "sycloprrt")
-            setPlanner(std::make_shared<oc::SyclopRRT>(si_, decomposition_));
-        else if (name == "syclopest")
-            setPlanner(std::make_shared<oc::SyclopEST>(si_, decomposition_));
-        else if (name == "pdst")
-            setPlanner(withGoalBias<oc::PDST>(si_, bias));
-        else if (name == "sst")
-        {
-            // SST optimises until its time is up unless its objective is satisfied: any solution is
-            // good enough here, as for the other planners
-            auto objective = std::make_shared<ompl::base::PathLengthOptimizationObjective>(si_);
-            objective->setCostThreshold(objective->infiniteCost());
-            pdef_->setOptimizationObjective(objective);
-            setPlanner(withGoalBias<oc::SST>(si_, bias));
-        }
-        else
-            throw ompl::Exception("PhysicsSetup", "unknown planner '" + name + "', expected one of " +
-                                                      joinNames(plannerNames()));
+        // a planner's objective (SST's) must not stay behind for the next planner
+        pdef_->setOptimizationObjective(nullptr);
+        ompl::base::PlannerPtr planner = plannerRegistry().make(name, *this);
+        const PlanningLimits &limits = world_->scene().limits;
+        if (planner->params().hasParam("goal_bias"))
+            ompl_core::applyParameters(*planner, {{"goal_bias", exactText(limits.goalBias), limits.where}});
+        setPlanner(planner);
     }
 
     bool PhysicsSetup::haveExactSolution() const

@@ -1,6 +1,6 @@
 #include "ompl_phys/io/PhysicsSceneSvg.h"
 
-#include "ompl_mm/io/TextFormat.h"
+#include "ompl_core/io/TextFormat.h"
 #include "ompl_phys/knowledge/Footprint.h"
 
 #include <cmath>
@@ -151,7 +151,7 @@ namespace ompl_phys
         out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << WIDTH_PX << "\" height=\""
             << canvas.height() << "\" font-family=\"sans-serif\" font-size=\"14\">\n"
             << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n"
-            << "<text x=\"8\" y=\"20\">" << ompl_mm::xmlEscaped(title) << "</text>\n";
+            << "<text x=\"8\" y=\"20\">" << ompl_core::xmlEscaped(title) << "</text>\n";
         const Eigen::Vector2d floorHalf = 0.5 * scene.floorSize;
         if (scene.floorSize.x() > 0.0)
             polygon(out, canvas,

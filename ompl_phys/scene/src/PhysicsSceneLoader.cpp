@@ -8,50 +8,16 @@
 #include <map>
 #include <sstream>
 
-#include "ompl_mm/scene/InputError.h"
-#include "ompl_mm/scene/XmlReading.h"
+#include "ompl_core/io/InputError.h"
+#include "ompl_core/io/XmlReading.h"
 
 namespace ompl_phys
 {
     namespace
     {
-        using ompl_mm::XmlElement;
-
-        /** A whole number in [low, high], or fallback when the attribute is absent. */
-        unsigned int readCount(const XmlElement &element, const char *attribute, unsigned int low,
-                               unsigned int high, unsigned int fallback)
-        {
-            if (!element.has(attribute))
-                return fallback;
-            const double value = element.number(attribute);
-            if (value != std::floor(value) || value < low || value > high)
-                element.fail(attribute, std::string(attribute) + " must be a whole number in [" +
-                                            std::to_string(low) + ", " + std::to_string(high) + "], got " +
-                                            element.text(attribute));
-            return static_cast<unsigned int>(value);
-        }
-
-        std::string formatNumber(double value)
-        {
-            std::ostringstream out;
-            out.imbue(std::locale::classic());
-            out << value;
-            return out.str();
-        }
-
-        /** A number in [low, high], or fallback when the attribute is absent. */
-        double readInRange(const XmlElement &element, const char *attribute, double low, double high,
-                           double fallback)
-        {
-            const double value = element.number(attribute, fallback);
-            if (value < low || value > high)
-                element.fail(attribute, std::string(attribute) + " must be in [" + formatNumber(low) + ", " +
-                                            formatNumber(high) + "], got " + element.text(attribute));
-            return value;
-        }
 
         /** "xmin xmax ymin ymax" as a box, each max above its min. */
-        Eigen::AlignedBox2d readRegion(const XmlElement &element, const char *attribute,
+        Eigen::AlignedBox2d readRegion(const ompl_core::XmlElement &element, const char *attribute,
                                        const Eigen::AlignedBox2d &fallback)
         {
             if (!element.has(attribute))
@@ -63,32 +29,32 @@ namespace ompl_phys
             return Eigen::AlignedBox2d(Eigen::Vector2d(v[0], v[2]), Eigen::Vector2d(v[1], v[3]));
         }
 
-        PhysicsShape readShape(const XmlElement &element)
+        PhysicsShape readShape(const ompl_core::XmlElement &element)
         {
             PhysicsShape shape;
             const std::string name = element.name();
             if (name == "box")
             {
-                ompl_mm::checkLeaf(element, {"size"});
+                ompl_core::checkLeaf(element, {"size"});
                 shape.kind = PhysicsShape::Kind::Box;
                 shape.boxSize = element.positiveVector3("size");
             }
             else if (name == "cylinder")
             {
-                ompl_mm::checkLeaf(element, {"radius", "length"});
+                ompl_core::checkLeaf(element, {"radius", "length"});
                 shape.kind = PhysicsShape::Kind::Cylinder;
                 shape.radius = element.positive("radius");
                 shape.length = element.positive("length");
             }
             else if (name == "sphere")
             {
-                ompl_mm::checkLeaf(element, {"radius"});
+                ompl_core::checkLeaf(element, {"radius"});
                 shape.kind = PhysicsShape::Kind::Sphere;
                 shape.radius = element.positive("radius");
             }
             else
             {
-                ompl_mm::checkLeaf(element, {"corners", "length"});
+                ompl_core::checkLeaf(element, {"corners", "length"});
                 shape.kind = PhysicsShape::Kind::Prism;
                 const std::vector<double> c = element.numbers("corners", 6);
                 shape.triangle << c[0], c[2], c[4], c[1], c[3], c[5];
@@ -109,55 +75,45 @@ namespace ompl_phys
         public:
             explicit PhysicsSceneParser(const std::string &file) { scene_.file = file; }
 
-            PhysicsScene parse(const XmlElement &root);
+            PhysicsScene parse(const ompl_core::XmlElement &root);
 
         private:
-            void readSimulation(const XmlElement &element);
-            void readMaterials(const XmlElement &element);
-            void readLimits(const XmlElement &element);
-            void readFloor(const XmlElement &element);
-            void readRobot(const XmlElement &element);
-            void readBody(const XmlElement &element);
-            void readPush(const XmlElement &element, PhysicsBody &body);
-            void readGoal(const XmlElement &element);
-            void checkPlacement(const XmlElement &robot, const XmlElement &goal) const;
+            void readSimulation(const ompl_core::XmlElement &element);
+            void readMaterials(const ompl_core::XmlElement &element);
+            void readLimits(const ompl_core::XmlElement &element);
+            void readFloor(const ompl_core::XmlElement &element);
+            void readRobot(const ompl_core::XmlElement &element);
+            void readBody(const ompl_core::XmlElement &element);
+            void readPush(const ompl_core::XmlElement &element, PhysicsBody &body);
+            void readGoal(const ompl_core::XmlElement &element);
+            void checkPlacement(const ompl_core::XmlElement &robot, const ompl_core::XmlElement &goal) const;
             void checkBodies() const;
 
             PhysicsScene scene_;
-            std::map<std::string, SourceLocation> names_;
+            ompl_core::FirstUses names_;
         };
 
-        PhysicsScene PhysicsSceneParser::parse(const XmlElement &root)
+        PhysicsScene PhysicsSceneParser::parse(const ompl_core::XmlElement &root)
         {
             root.checkAttributes({"name", "time_limit"});
             scene_.name = root.text("name", std::filesystem::path(scene_.file).stem().string());
             if (root.has("time_limit"))
                 scene_.timeLimit = root.positive("time_limit");
 
-            std::map<std::string, std::vector<XmlElement>> byTag;
-            for (const XmlElement &child :
-                 root.children({"simulation", "materials", "limits", "floor", "robot", "body", "goal"}))
-            {
-                std::vector<XmlElement> &same = byTag[child.name()];
-                if (child.name() != "body" && !same.empty())
-                    child.fail("second " + child.tag() + ", only one is allowed (first at line " +
-                               std::to_string(same.front().where().line) + ")");
-                same.push_back(child);
-            }
-            for (const char *required : {"robot", "goal"})
-                if (byTag[required].empty())
-                    root.fail("missing <" + std::string(required) + ">");
+            auto byTag = ompl_core::childrenByTag(
+                root, {"simulation", "materials", "limits", "floor", "robot", "body", "goal"}, {"body"},
+                {"robot", "goal"});
 
-            for (const XmlElement &e : byTag["simulation"])
+            for (const ompl_core::XmlElement &e : byTag["simulation"])
                 readSimulation(e);
-            for (const XmlElement &e : byTag["materials"])
+            for (const ompl_core::XmlElement &e : byTag["materials"])
                 readMaterials(e);
-            for (const XmlElement &e : byTag["limits"])
+            for (const ompl_core::XmlElement &e : byTag["limits"])
                 readLimits(e);
-            for (const XmlElement &e : byTag["floor"])
+            for (const ompl_core::XmlElement &e : byTag["floor"])
                 readFloor(e);
             readRobot(byTag["robot"].front());
-            for (const XmlElement &e : byTag["body"])
+            for (const ompl_core::XmlElement &e : byTag["body"])
                 readBody(e);
             readGoal(byTag["goal"].front());
             checkPlacement(byTag["robot"].front(), byTag["goal"].front());
@@ -165,30 +121,31 @@ namespace ompl_phys
             return scene_;
         }
 
-        void PhysicsSceneParser::readSimulation(const XmlElement &element)
+        void PhysicsSceneParser::readSimulation(const ompl_core::XmlElement &element)
         {
-            ompl_mm::checkLeaf(element, {"gravity", "erp", "cfm", "max_contacts", "iterations", "substeps"});
+            ompl_core::checkLeaf(element,
+                                 {"gravity", "erp", "cfm", "max_contacts", "iterations", "substeps"});
             ContactParameters &c = scene_.contact;
             c.gravity = element.number("gravity", c.gravity);
-            c.erp = readInRange(element, "erp", 1e-6, 1.0, c.erp);
-            c.cfm = readInRange(element, "cfm", 0.0, 1.0, c.cfm);
-            c.maxContacts = readCount(element, "max_contacts", 1, 16, c.maxContacts);
-            c.iterations = readCount(element, "iterations", 1, 1000, c.iterations);
-            c.substeps = readCount(element, "substeps", 1, 1000, c.substeps);
+            c.erp = element.inRange("erp", 1e-6, 1.0, c.erp);
+            c.cfm = element.inRange("cfm", 0.0, 1.0, c.cfm);
+            c.maxContacts = element.count("max_contacts", 1, 16, c.maxContacts);
+            c.iterations = element.count("iterations", 1, 1000, c.iterations);
+            c.substeps = element.count("substeps", 1, 1000, c.substeps);
             c.where = element.where();
         }
 
-        void PhysicsSceneParser::readMaterials(const XmlElement &element)
+        void PhysicsSceneParser::readMaterials(const ompl_core::XmlElement &element)
         {
-            ompl_mm::checkLeaf(element, {"robot_floor", "default"});
+            ompl_core::checkLeaf(element, {"robot_floor", "default"});
             scene_.materials.robotFloor = element.nonNegative("robot_floor", scene_.materials.robotFloor);
             scene_.materials.defaultMu = element.nonNegative("default", scene_.materials.defaultMu);
             scene_.materials.where = element.where();
         }
 
-        void PhysicsSceneParser::readLimits(const XmlElement &element)
+        void PhysicsSceneParser::readLimits(const ompl_core::XmlElement &element)
         {
-            ompl_mm::checkLeaf(
+            ompl_core::checkLeaf(
                 element, {"robot_region", "body_region", "max_robot_speed", "max_body_speed",
                           "max_angular_speed", "max_force", "step", "min_steps", "max_steps", "goal_bias"});
             PlanningLimits &l = scene_.limits;
@@ -204,27 +161,27 @@ namespace ompl_phys
                 l.maxForce = element.positive("max_force");
             if (element.has("step"))
                 l.stepSize = element.positive("step");
-            l.minControlSteps = readCount(element, "min_steps", 1, 100000, l.minControlSteps);
-            l.maxControlSteps = readCount(element, "max_steps", 1, 100000, l.maxControlSteps);
+            l.minControlSteps = element.count("min_steps", 1, 100000, l.minControlSteps);
+            l.maxControlSteps = element.count("max_steps", 1, 100000, l.maxControlSteps);
             if (l.maxControlSteps < l.minControlSteps)
                 element.fail("max_steps", "max_steps (" + std::to_string(l.maxControlSteps) +
                                               ") must not be below min_steps (" +
                                               std::to_string(l.minControlSteps) + ")");
-            l.goalBias = readInRange(element, "goal_bias", 0.0, 1.0, l.goalBias);
+            l.goalBias = element.inRange("goal_bias", 0.0, 1.0, l.goalBias);
             l.where = element.where();
         }
 
-        void PhysicsSceneParser::readFloor(const XmlElement &element)
+        void PhysicsSceneParser::readFloor(const ompl_core::XmlElement &element)
         {
-            ompl_mm::checkLeaf(element, {"size"});
+            ompl_core::checkLeaf(element, {"size"});
             scene_.floorSize = element.vector2("size");
             if (!(scene_.floorSize.array() > 0.0).all())
                 element.fail("size", "the floor size must be two positive numbers");
         }
 
-        void PhysicsSceneParser::readRobot(const XmlElement &element)
+        void PhysicsSceneParser::readRobot(const ompl_core::XmlElement &element)
         {
-            ompl_mm::checkLeaf(element, {"name", "radius", "mass", "start"});
+            ompl_core::checkLeaf(element, {"name", "radius", "mass", "start"});
             PhysicsRobot &robot = scene_.robot;
             robot.name = element.text("name", robot.name);
             robot.radius = element.positive("radius");
@@ -234,16 +191,13 @@ namespace ompl_phys
             names_.emplace(robot.name, robot.where);
         }
 
-        void PhysicsSceneParser::readBody(const XmlElement &element)
+        void PhysicsSceneParser::readBody(const ompl_core::XmlElement &element)
         {
             element.checkAttributes({"name", "kind", "mass"});
             PhysicsBody body;
             body.name = element.text("name");
             body.where = element.where();
-            const auto [first, inserted] = names_.emplace(body.name, body.where);
-            if (!inserted)
-                element.fail("name", "second body named '" + body.name + "' (first at line " +
-                                         std::to_string(first->second.line) + ")");
+            ompl_core::claimName(names_, element, body.name, "second body named '" + body.name + "'");
             const std::string kind = element.text("kind");
             if (kind == "fixed")
                 body.kind = BodyKind::Fixed;
@@ -258,10 +212,10 @@ namespace ompl_phys
             if (body.kind != BodyKind::Fixed)
                 body.mass = element.positive("mass");
 
-            std::vector<XmlElement> shapes;
+            std::vector<ompl_core::XmlElement> shapes;
             bool hasOrigin = false;
             bool hasPush = false;
-            for (const XmlElement &child :
+            for (const ompl_core::XmlElement &child :
                  element.children({"origin", "box", "cylinder", "sphere", "prism", "push"}))
             {
                 const std::string name = child.name();
@@ -272,7 +226,7 @@ namespace ompl_phys
                         child.fail("second " + child.tag() + " in body '" + body.name + "'");
                     seen = true;
                     if (name == "origin")
-                        body.start = ompl_mm::readOrigin(child);
+                        body.start = ompl_core::readOrigin(child);
                     else
                         readPush(child, body);
                 }
@@ -293,9 +247,10 @@ namespace ompl_phys
             scene_.bodies.push_back(body);
         }
 
-        void PhysicsSceneParser::readPush(const XmlElement &element, PhysicsBody &body)
+        void PhysicsSceneParser::readPush(const ompl_core::XmlElement &element, PhysicsBody &body)
         {
-            ompl_mm::checkLeaf(element, {"axis", "strip_half_width", "lateral_tolerance", "angle_tolerance"});
+            ompl_core::checkLeaf(element,
+                                 {"axis", "strip_half_width", "lateral_tolerance", "angle_tolerance"});
             if (body.kind != BodyKind::Constrained)
                 element.fail("<push> is only for constrained bodies, '" + body.name + "' is not");
             const Eigen::Vector3d axis = element.vector3("axis");
@@ -309,15 +264,16 @@ namespace ompl_phys
                 element.fail("angle_tolerance", "angle_tolerance must be given and > 0");
         }
 
-        void PhysicsSceneParser::readGoal(const XmlElement &element)
+        void PhysicsSceneParser::readGoal(const ompl_core::XmlElement &element)
         {
-            ompl_mm::checkLeaf(element, {"xy", "radius"});
+            ompl_core::checkLeaf(element, {"xy", "radius"});
             scene_.goal.centre = element.vector2("xy");
             scene_.goal.radius = element.positive("radius");
             scene_.goal.where = element.where();
         }
 
-        void PhysicsSceneParser::checkPlacement(const XmlElement &robot, const XmlElement &goal) const
+        void PhysicsSceneParser::checkPlacement(const ompl_core::XmlElement &robot,
+                                                const ompl_core::XmlElement &goal) const
         {
             const Eigen::AlignedBox2d &region = scene_.limits.robotRegion;
             if (region.isEmpty())
@@ -335,7 +291,7 @@ namespace ompl_phys
             for (const PhysicsBody &body : scene_.bodies)
                 if (body.kind != BodyKind::Fixed &&
                     !scene_.limits.bodyRegion.contains(body.start.translation().head<2>()))
-                    throw ompl_mm::InputError(
+                    throw ompl_core::InputError(
                         body.where,
                         "body '" + body.name + "' starts outside the body region (limits body_region)");
         }
@@ -343,13 +299,13 @@ namespace ompl_phys
 
     PhysicsScene loadPhysicsScene(const std::string &path)
     {
-        return parsePhysicsScene(ompl_mm::readInputFile(path, "scene file"), path);
+        return parsePhysicsScene(ompl_core::readInputFile(path, "scene file"), path);
     }
 
     PhysicsScene parsePhysicsScene(const std::string &xml, const std::string &sourceName)
     {
         tinyxml2::XMLDocument document;
         return PhysicsSceneParser(sourceName)
-            .parse(ompl_mm::parseRootElement(document, xml, sourceName, "physics_scene"));
+            .parse(ompl_core::parseRootElement(document, xml, sourceName, "physics_scene"));
     }
 }  // namespace ompl_phys

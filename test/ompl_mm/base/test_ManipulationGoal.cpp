@@ -192,8 +192,8 @@ TEST(ManipulationGoalInput, GoalOffEverySurfaceInOneCoordinateThrows)
     scene.objectGoals[0].position = {3.0, std::nullopt, std::nullopt};
     const std::string line = scene.objectGoals[0].where.str() + ": ";
     std::string what = setupError(scene);
-    EXPECT_TRUE(startsWith(what, line)) << "no InputError for x = 3: '" << what << "'";
+    EXPECT_TRUE(startsWith(what, line)) << "no ompl_core::InputError for x = 3: '" << what << "'";
     scene.objectGoals[0].position = {std::nullopt, std::nullopt, 0.5};
     what = setupError(scene);
-    EXPECT_TRUE(startsWith(what, line)) << "no InputError for z = 0.5: '" << what << "'";
+    EXPECT_TRUE(startsWith(what, line)) << "no ompl_core::InputError for z = 0.5: '" << what << "'";
 }

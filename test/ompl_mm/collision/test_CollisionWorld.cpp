@@ -147,7 +147,7 @@ TEST(CollisionWorldInput, SurfaceNamingAnUnknownObstacleThrows)
     scene.surfaces[0].obstacle = "no_such_table";
     const ManipulationModelPtr model = makeModel(scene);
     const std::string what = inputErrorOf([&] { CollisionWorld world(model); });
-    ASSERT_NE(what, "") << "no InputError";
+    ASSERT_NE(what, "") << "no ompl_core::InputError";
     EXPECT_TRUE(startsWith(what, scene.surfaces[0].where.str() + ": ")) << what;
     EXPECT_TRUE(contains(what, "no_such_table")) << what;
 }

@@ -12,7 +12,7 @@ using namespace ompl_mm::test;
 
 namespace
 {
-    const SourceLocation WHERE{"unit_scene.xml", 17};
+    const ompl_core::SourceLocation WHERE{"unit_scene.xml", 17};
 
     PrimitiveSpec spec(const std::string &type, std::map<std::string, std::string> params = {})
     {
@@ -41,7 +41,7 @@ namespace
     class Factory : public MobileBlockedTest
     {
     protected:
-        /** The InputError message of building specs, or "" when it succeeds. */
+        /** The ompl_core::InputError message of building specs, or "" when it succeeds. */
         std::string error(const std::vector<PrimitiveSpec> &specs) const
         {
             return inputErrorOf([&] { factory_.build(specs, &space_); });
@@ -152,10 +152,10 @@ TEST_F(Factory, ParametersReadNumbers)
     EXPECT_DOUBLE_EQ(params.number("a"), 0.25);
     EXPECT_DOUBLE_EQ(params.number("b", 7.0), 1e-3);
     EXPECT_DOUBLE_EQ(params.number("missing", 7.0), 7.0);
-    EXPECT_THROW(params.number("missing"), InputError);
-    EXPECT_THROW(params.number("c"), InputError);
+    EXPECT_THROW(params.number("missing"), ompl_core::InputError);
+    EXPECT_THROW(params.number("c"), ompl_core::InputError);
     params.rejectUnread();  // all present names were asked for
     const PrimitiveParameters fresh(s);
     fresh.number("a");
-    EXPECT_THROW(fresh.rejectUnread(), InputError);
+    EXPECT_THROW(fresh.rejectUnread(), ompl_core::InputError);
 }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "ompl_mm/scene/XmlReading.h"
+#include "ompl_core/io/XmlReading.h"
 
 #include "common/MobileBlocked.h"
 
@@ -204,16 +204,16 @@ TEST(SceneLoader, DefaultsWhenOptionalPartsAreAbsent)
 
 TEST(SceneLoader, NumbersParseCompletelyAndFinitely)
 {
-    EXPECT_EQ(parseNumber("-0.25"), -0.25);
-    EXPECT_EQ(parseNumber("+2e-3"), 2e-3);
-    EXPECT_FALSE(parseNumber("0.3abc"));
-    EXPECT_FALSE(parseNumber("nan"));
-    EXPECT_FALSE(parseNumber("inf"));
-    EXPECT_FALSE(parseNumber("1e999"));
-    EXPECT_FALSE(parseNumber(""));
-    EXPECT_DOUBLE_EQ(*parseAngle("180deg"), PI);
-    EXPECT_FALSE(parseAngle("deg"));
-    EXPECT_FALSE(parseAngle("90 deg"));
+    EXPECT_EQ(ompl_core::parseNumber("-0.25"), -0.25);
+    EXPECT_EQ(ompl_core::parseNumber("+2e-3"), 2e-3);
+    EXPECT_FALSE(ompl_core::parseNumber("0.3abc"));
+    EXPECT_FALSE(ompl_core::parseNumber("nan"));
+    EXPECT_FALSE(ompl_core::parseNumber("inf"));
+    EXPECT_FALSE(ompl_core::parseNumber("1e999"));
+    EXPECT_FALSE(ompl_core::parseNumber(""));
+    EXPECT_DOUBLE_EQ(*ompl_core::parseAngle("180deg"), PI);
+    EXPECT_FALSE(ompl_core::parseAngle("deg"));
+    EXPECT_FALSE(ompl_core::parseAngle("90 deg"));
 }
 
 TEST(SceneLoader, MissingFileNamesTheFile)

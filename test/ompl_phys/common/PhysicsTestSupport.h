@@ -1,8 +1,8 @@
-// Shared helpers of the ompl_phys tests: the benchmark scenes, a small inline scene, InputError capture,
-// bit-exact comparison of simulated states.
+// Shared helpers of the ompl_phys tests: the benchmark scenes, a small inline scene, ompl_core::InputError
+// capture, bit-exact comparison of simulated states.
 #pragma once
 
-#include "ompl_mm/scene/InputError.h"
+#include "ompl_core/io/InputError.h"
 #include "ompl_phys/knowledge/Footprint.h"
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
 #include "ompl_phys/world/BodyState.h"
@@ -66,7 +66,7 @@ namespace ompl_phys::test
         return parsePhysicsScene(joinLines(smallSceneLines()), "small.xml");
     }
 
-    /** The message of the ompl_mm::InputError that f() throws, or "" when it throws none. */
+    /** The message of the ompl_core::InputError that f() throws, or "" when it throws none. */
     template <typename F>
     std::string inputErrorOf(F &&f)
     {
@@ -74,7 +74,7 @@ namespace ompl_phys::test
         {
             f();
         }
-        catch (const ompl_mm::InputError &e)
+        catch (const ompl_core::InputError &e)
         {
             return e.what();
         }

@@ -7,6 +7,7 @@
 #include "ompl_phys/control/PathSimulation.h"
 #include "ompl_phys/metrics/TrajectoryMetrics.h"
 
+#include <ompl/control/planners/rrt/RRT.h>
 #include <ompl/control/spaces/RealVectorControlSpace.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
@@ -151,7 +152,7 @@ namespace
 
 TEST(PhysicsSetup, PlannerNamesIncludeTheBenchmarkPlanners)
 {
-    const std::vector<std::string> &names = PhysicsSetup::plannerNames();
+    const std::vector<std::string> names = PhysicsSetup::plannerRegistry().names();
     for (const char *name : {"rrt", "est", "kpiece", "sycloprrt", "syclopest"})
         EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
     // each name allocates a planner
@@ -177,6 +178,45 @@ TEST(PhysicsSetup, UnknownPlannerThrows)
         EXPECT_TRUE(contains(message, "rrtstar")) << message;
         EXPECT_TRUE(contains(message, "kpiece")) << message;  // lists the known ones
     }
+}
+
+TEST(PhysicsSetup, SstObjectiveDoesNotStayForTheNextPlanner)
+{
+    PhysicsSetup setup(benchmarkScene(1));
+    setup.setPlannerByName("sst");
+    EXPECT_TRUE(setup.getProblemDefinition()->hasOptimizationObjective());
+    setup.setPlannerByName("rrt");
+    EXPECT_FALSE(setup.getProblemDefinition()->hasOptimizationObjective());
+}
+
+TEST(PhysicsSetup, SceneGoalBiasReachesPlannersThatDeclareIt)
+{
+    PhysicsScene scene = benchmarkScene(1);
+    scene.limits.goalBias = 0.123;
+    PhysicsSetup setup(scene);
+    for (const char *name : {"rrt", "est", "kpiece", "pdst", "sst"})
+    {
+        setup.setPlannerByName(name);
+        ASSERT_TRUE(setup.getPlanner()->params().hasParam("goal_bias")) << name;
+        EXPECT_EQ(std::stod(setup.getPlanner()->params().getParam("goal_bias")->getValue()), 0.123) << name;
+    }
+}
+
+TEST(PhysicsSetup, UsersCanRegisterTheirOwnPlanner)
+{
+    auto &registry = PhysicsSetup::plannerRegistry();
+    if (!registry.has("test_rrt_with_bias_half"))
+        registry.add("test_rrt_with_bias_half", "RRT with goal bias 0.5, defined by a test",
+                     [](PhysicsSetup &s)
+                     {
+                         auto planner = std::make_shared<ompl::control::RRT>(s.getSpaceInformation());
+                         planner->setName("TestRRT");
+                         return planner;
+                     });
+    PhysicsSetup setup(benchmarkScene(1));
+    setup.setPlannerByName("test_rrt_with_bias_half");
+    EXPECT_EQ(setup.getPlanner()->getName(), "TestRRT");
+    EXPECT_THROW(registry.add("rrt", "a second rrt", nullptr), ompl::Exception);
 }
 
 TEST(PhysicsSetup, ProblemFollowsTheScene)
@@ -241,7 +281,8 @@ TEST(PhysicsSetup, SameSeedGivesTheSamePlan)
 
 namespace
 {
-    /** The InputError message of building a PhysicsSetup for the small scene with line `line` replaced. */
+    /** The ompl_core::InputError message of building a PhysicsSetup for the small scene with line `line`
+     * replaced. */
     std::string setupErrorWithLine(int line, const std::string &text)
     {
         std::vector<std::string> lines = smallSceneLines();

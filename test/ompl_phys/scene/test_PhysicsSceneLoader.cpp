@@ -1,5 +1,5 @@
 // Tests for PhysicsSceneLoader: the benchmark scenes load as written, and every kind of bad input throws
-// ompl_mm::InputError naming the file and the line of the offending element or attribute.
+// ompl_core::InputError naming the file and the line of the offending element or attribute.
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
 
 #include "ompl_phys/common/PhysicsTestSupport.h"

@@ -1,4 +1,4 @@
-#include "ompl_mm/scene/XmlReading.h"
+#include "ompl_core/io/XmlReading.h"
 
 #include <tinyxml2.h>
 
@@ -6,12 +6,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <locale>
 #include <sstream>
 #include <utility>
 
-#include "ompl_mm/scene/InputError.h"
+#include "ompl_core/io/InputError.h"
 
-namespace ompl_mm
+namespace ompl_core
 {
     namespace
     {
@@ -42,6 +43,14 @@ namespace ompl_mm
                 if (std::string_view(listed) == name)
                     return true;
             return false;
+        }
+
+        std::string formatNumber(double value)
+        {
+            std::ostringstream out;
+            out.imbue(std::locale::classic());
+            out << value;
+            return out.str();
         }
 
         bool isBlank(const char *text)
@@ -238,6 +247,27 @@ namespace ompl_mm
         return found;
     }
 
+    double XmlElement::inRange(const char *attribute, double low, double high, double fallback) const
+    {
+        const double value = number(attribute, fallback);
+        if (value < low || value > high)
+            fail(attribute, std::string(attribute) + " must be in [" + formatNumber(low) + ", " +
+                                formatNumber(high) + "], got " + text(attribute));
+        return value;
+    }
+
+    unsigned int XmlElement::count(const char *attribute, unsigned int low, unsigned int high,
+                                   unsigned int fallback) const
+    {
+        if (!has(attribute))
+            return fallback;
+        const double value = number(attribute);
+        if (value != std::floor(value) || value < low || value > high)
+            fail(attribute, std::string(attribute) + " must be a whole number in [" + std::to_string(low) +
+                                ", " + std::to_string(high) + "], got " + text(attribute));
+        return static_cast<unsigned int>(value);
+    }
+
     double XmlElement::nonNegativeAngle(const char *attribute, double fallback) const
     {
         const double found = angle(attribute, fallback);
@@ -252,7 +282,7 @@ namespace ompl_mm
         return has(attribute) ? *read(attribute, 1, true, false).front() : fallback;
     }
 
-    GoalCoordinate XmlElement::angleOrAny(const char *attribute, GoalCoordinate fallback) const
+    OptionalNumber XmlElement::angleOrAny(const char *attribute, OptionalNumber fallback) const
     {
         return has(attribute) ? read(attribute, 1, true, true).front() : fallback;
     }
@@ -260,12 +290,12 @@ namespace ompl_mm
     std::vector<double> XmlElement::numbers(const char *attribute, std::size_t count) const
     {
         std::vector<double> values;
-        for (const GoalCoordinate &value : read(attribute, count, false, false))
+        for (const OptionalNumber &value : read(attribute, count, false, false))
             values.push_back(*value);
         return values;
     }
 
-    std::vector<GoalCoordinate> XmlElement::coordinates(const char *attribute, std::size_t count) const
+    std::vector<OptionalNumber> XmlElement::coordinates(const char *attribute, std::size_t count) const
     {
         return read(attribute, count, false, true);
     }
@@ -300,7 +330,7 @@ namespace ompl_mm
     {
         if (!has(attribute))
             return fallback;
-        const std::vector<GoalCoordinate> values = read(attribute, 3, true, false);
+        const std::vector<OptionalNumber> values = read(attribute, 3, true, false);
         return Eigen::Vector3d(*values[0], *values[1], *values[2]);
     }
 
@@ -317,7 +347,7 @@ namespace ompl_mm
         return found;
     }
 
-    std::vector<GoalCoordinate> XmlElement::read(const char *attribute, std::size_t count, bool angles,
+    std::vector<OptionalNumber> XmlElement::read(const char *attribute, std::size_t count, bool angles,
                                                  bool allowAny) const
     {
         const std::vector<std::string> tokens = splitWhitespace(required(attribute));
@@ -325,7 +355,7 @@ namespace ompl_mm
         if (tokens.empty() || (count > 0 && tokens.size() != count))
             fail(attribute, what + " needs " + (count > 0 ? std::to_string(count) : "at least 1") + " value" +
                                 (count == 1 ? "" : "s") + ", got " + std::to_string(tokens.size()));
-        std::vector<GoalCoordinate> values;
+        std::vector<OptionalNumber> values;
         for (const std::string &token : tokens)
         {
             if (token == "*")
@@ -383,6 +413,40 @@ namespace ompl_mm
         return element;
     }
 
+    void claimName(FirstUses &uses, const XmlElement &element, const std::string &name,
+                   const std::string &message)
+    {
+        const auto [first, inserted] = uses.emplace(name, element.where());
+        if (!inserted)
+            element.fail("name", message + " (first at line " + std::to_string(first->second.line) + ")");
+    }
+
+    void claimOnce(FirstUses &uses, const XmlElement &child, const XmlElement &parent)
+    {
+        const auto [first, inserted] = uses.emplace(child.name(), child.where());
+        if (!inserted)
+            child.fail("second " + child.tag() + " in " + parent.tag() +
+                       ", only one is allowed (first at line " + std::to_string(first->second.line) + ")");
+    }
+
+    std::map<std::string, std::vector<XmlElement>> childrenByTag(
+        const XmlElement &parent, std::initializer_list<const char *> allowed,
+        std::initializer_list<const char *> repeatable, std::initializer_list<const char *> required)
+    {
+        std::map<std::string, std::vector<XmlElement>> byTag;
+        FirstUses singles;
+        for (const XmlElement &child : parent.children(allowed))
+        {
+            if (!isListed(child.name().c_str(), repeatable))
+                claimOnce(singles, child, parent);
+            byTag[child.name()].push_back(child);
+        }
+        for (const char *tag : required)
+            if (byTag[tag].empty())
+                parent.fail("missing <" + std::string(tag) + "> in " + parent.tag());
+        return byTag;
+    }
+
     void checkLeaf(const XmlElement &element, std::initializer_list<const char *> attributes)
     {
         element.checkAttributes(attributes);
@@ -401,4 +465,4 @@ namespace ompl_mm
                             .toRotationMatrix();
         return pose;
     }
-}  // namespace ompl_mm
+}  // namespace ompl_core

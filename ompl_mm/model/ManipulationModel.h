@@ -22,7 +22,7 @@ namespace ompl_mm
         /** Height within which an object counts as resting on a surface, metres. */
         static constexpr double REST_TOLERANCE = 1e-4;
 
-        /** @throws InputError (naming the scene's <robot> line) when the tool link is unknown. */
+        /** @throws ompl_core::InputError (naming the scene's <robot> line) when the tool link is unknown. */
         ManipulationModel(Scene scene, RobotModel robot);
 
         const Scene &scene() const { return scene_; }

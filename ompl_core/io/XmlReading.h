@@ -1,18 +1,21 @@
 /* Reading values from the elements of an XML file so that every error names file:line: allowed
    attributes and children, finite numbers, angles with an optional "deg" suffix, fixed-length
-   vectors and "*" (don't care) coordinates. Used by SceneLoader; independent of the scene. */
+   vectors, "*" (don't care) coordinates, names used once. Shared by the scene loaders of both
+   libraries; knows nothing of what the elements mean. */
 #pragma once
+
+#include "ompl_core/io/SourceLocation.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+
 #include <cstddef>
 #include <initializer_list>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "ompl_mm/scene/Scene.h"
 
 namespace tinyxml2
 {
@@ -20,8 +23,11 @@ namespace tinyxml2
     class XMLElement;
 }  // namespace tinyxml2
 
-namespace ompl_mm
+namespace ompl_core
 {
+    /** A number, or nothing for "*" (don't care). */
+    using OptionalNumber = std::optional<double>;
+
     /** A finite decimal number filling the whole token ("1", "-0.5", "+2e-3"), else nothing.
         Independent of the C locale. */
     std::optional<double> parseNumber(std::string_view token);
@@ -87,6 +93,13 @@ namespace ompl_mm
         /** One number >= 0, or fallback when absent. */
         double nonNegative(const char *attribute, double fallback) const;
 
+        /** One number in [low, high], or fallback when absent. */
+        double inRange(const char *attribute, double low, double high, double fallback) const;
+
+        /** One whole number in [low, high] (written as a decimal number), or fallback when absent. */
+        unsigned int count(const char *attribute, unsigned int low, unsigned int high,
+                           unsigned int fallback) const;
+
         /** One angle >= 0 (radians, or degrees with "deg"), or fallback when absent. */
         double nonNegativeAngle(const char *attribute, double fallback) const;
 
@@ -94,13 +107,13 @@ namespace ompl_mm
         double angle(const char *attribute, double fallback) const;
 
         /** One angle or "*" (nullopt), or fallback when absent. */
-        GoalCoordinate angleOrAny(const char *attribute, GoalCoordinate fallback) const;
+        OptionalNumber angleOrAny(const char *attribute, OptionalNumber fallback) const;
 
         /** Whitespace-separated finite numbers; count 0 means any count >= 1. */
         std::vector<double> numbers(const char *attribute, std::size_t count) const;
 
         /** As numbers(), each entry may also be "*" (nullopt). */
-        std::vector<GoalCoordinate> coordinates(const char *attribute, std::size_t count) const;
+        std::vector<OptionalNumber> coordinates(const char *attribute, std::size_t count) const;
 
         Eigen::Vector2d vector2(const char *attribute) const;
         Eigen::Vector3d vector3(const char *attribute) const;
@@ -120,7 +133,7 @@ namespace ompl_mm
         const char *required(const char *attribute) const;
 
         /** The tokens of the attribute, each parsed as a number or angle, "*" allowed or not. */
-        std::vector<GoalCoordinate> read(const char *attribute, std::size_t count, bool angles,
+        std::vector<OptionalNumber> read(const char *attribute, std::size_t count, bool angles,
                                          bool allowAny) const;
 
         const tinyxml2::XMLElement *element_;
@@ -136,9 +149,27 @@ namespace ompl_mm
     XmlElement parseRootElement(tinyxml2::XMLDocument &document, const std::string &xml,
                                 const std::string &sourceName, const char *rootName);
 
+    /** For each name or tag already used, where it was first used. */
+    using FirstUses = std::map<std::string, SourceLocation>;
+
+    /** Records that element uses name (its attribute "name").
+        @throws InputError with message and the first use's line when name was used before. */
+    void claimName(FirstUses &uses, const XmlElement &element, const std::string &name,
+                   const std::string &message);
+
+    /** Records that child appears in parent. @throws InputError when it appeared before. */
+    void claimOnce(FirstUses &uses, const XmlElement &child, const XmlElement &parent);
+
+    /** The children of parent grouped by tag, in document order within each tag. Tags not in
+        repeatable may appear once; tags in required must appear.
+        @throws InputError for an unknown tag, a second single one, or a missing required one. */
+    std::map<std::string, std::vector<XmlElement>> childrenByTag(
+        const XmlElement &parent, std::initializer_list<const char *> allowed,
+        std::initializer_list<const char *> repeatable, std::initializer_list<const char *> required);
+
     /** Checks an element that carries only the given attributes and no children. */
     void checkLeaf(const XmlElement &element, std::initializer_list<const char *> attributes);
 
     /** Reads <origin xyz rpy>: rpy as in URDF, R = Rz(yaw) Ry(pitch) Rx(roll). */
     Eigen::Isometry3d readOrigin(const XmlElement &element);
-}  // namespace ompl_mm
+}  // namespace ompl_core

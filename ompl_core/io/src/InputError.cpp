@@ -1,6 +1,6 @@
-#include "ompl_mm/scene/InputError.h"
+#include "ompl_core/io/InputError.h"
 
-namespace ompl_mm
+namespace ompl_core
 {
     namespace
     {
@@ -20,4 +20,4 @@ namespace ompl_mm
     }
 
     InputError::InputError(const std::string &message) : ompl::Exception(message) {}
-}  // namespace ompl_mm
+}  // namespace ompl_core

@@ -1,6 +1,4 @@
-#include "ompl_mm/io/TextFormat.h"
-
-#include "ompl_mm/io/ResultJson.h"
+#include "ompl_core/io/TextFormat.h"
 
 #include <algorithm>
 #include <iomanip>
@@ -8,7 +6,7 @@
 #include <sstream>
 #include <utility>
 
-namespace ompl_mm
+namespace ompl_core
 {
     std::string jsonQuoted(const std::string &text)
     {
@@ -41,17 +39,4 @@ namespace ompl_mm
         }
         return out;
     }
-
-    void writeRunHeader(std::ostream &out, const RunDescription &run, bool solved, const std::string &status,
-                        double time)
-    {
-        out << std::setprecision(10) << "{\n"
-            << "  \"scene\": " << jsonQuoted(run.scene) << ",\n"
-            << "  \"planner\": " << jsonQuoted(run.planner) << ",\n"
-            << "  \"seed\": " << run.seed << ",\n"
-            << "  \"time_limit_s\": " << run.timeLimit << ",\n"
-            << "  \"solved\": " << (solved ? "true" : "false") << ",\n"
-            << "  \"status\": " << jsonQuoted(status) << ",\n"
-            << "  \"time_s\": " << time << ",\n";
-    }
-}  // namespace ompl_mm
+}  // namespace ompl_core

@@ -1,6 +1,6 @@
 // Tests for ManipulationSetup.
-#include "ompl_mm/geometric/ManipulationSetup.h"
 #include "ompl_mm/primitives/PushMobile.h"
+#include "ompl_mm/setup/ManipulationSetup.h"
 
 #include "common/MobileBlocked.h"
 

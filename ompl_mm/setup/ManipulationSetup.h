@@ -1,10 +1,12 @@
 /* A geometric::SimpleSetup for a manipulation scene: builds the robot model, the manipulation
-   state space, the validity checker, the start state, the goal, the primitives and the MOPL
-   planner with the scene's parameters, and checks the problem before any planning (robot start
-   of the right size and inside the limits, objects resting, no collision at the start, a goal
-   that can be reached). Use it like any SimpleSetup: solve(), getSolutionPath(), Benchmark. */
+   state space, the validity checker, the start state, the goal, the primitives and the scene's
+   planner (by name from the planner registry, with the scene's parameters), and checks the
+   problem before any planning (robot start of the right size and inside the limits, objects
+   resting, no collision at the start, a goal that can be reached). Use it like any SimpleSetup:
+   solve(), getSolutionPath(), Benchmark. */
 #pragma once
 
+#include "ompl_core/run/PlannerRegistry.h"
 #include "ompl_mm/base/ManipulationGoal.h"
 #include "ompl_mm/base/ManipulationValidityChecker.h"
 #include "ompl_mm/geometric/ManipulationPath.h"
@@ -19,27 +21,37 @@ namespace ompl_mm
     {
     public:
         /** @param factory builds the scene's primitives; pass your own to add primitive types.
-            @throws InputError naming the scene file and line of any fault in the problem. */
+            @throws ompl_core::InputError naming the scene file and line of any fault in the problem,
+            an unknown planner or a bad planner parameter. */
         explicit ManipulationSetup(const Scene &scene, const PrimitiveFactory &factory = PrimitiveFactory());
+
+        /** The planners that can plan on a ManipulationSetup: "mopl". Add your own with add(). */
+        static ompl_core::PlannerRegistry<ManipulationSetup> &plannerRegistry();
+
+        /** Makes the registered planner called name and sets it as this setup's planner (without
+            the scene's parameters: apply those with ompl_core::applyParameters if wanted).
+            @throws ompl_core::InputError for an unknown name. */
+        void setPlannerByName(const std::string &name);
 
         const ManipulationModelPtr &model() const { return model_; }
         const ManipulationStateSpacePtr &manipulationSpace() const { return space_; }
         const std::shared_ptr<ManipulationValidityChecker> &validityChecker() const { return checker_; }
         const std::shared_ptr<ManipulationGoal> &manipulationGoal() const { return goal_; }
-        /** The MOPL planner made for the scene (also set as the setup's planner). */
-        const std::shared_ptr<MOPL> &mopl() const { return mopl_; }
+        /** The scene's primitives, as the factory built them. */
+        const std::vector<PrimitivePtr> &primitives() const { return primitives_; }
+        /** The current planner when it is MOPL, else null. */
+        std::shared_ptr<MOPL> mopl() const;
 
         /** The solution as a ManipulationPath. @throws ompl::Exception when there is none. */
         ManipulationPath &manipulationPath() const;
 
     private:
         void setStartFromScene(const Scene &scene);
-        void applyPlannerParameters(const Scene &scene);
 
         ManipulationModelPtr model_;
         ManipulationStateSpacePtr space_;
         std::shared_ptr<ManipulationValidityChecker> checker_;
         std::shared_ptr<ManipulationGoal> goal_;
-        std::shared_ptr<MOPL> mopl_;
+        std::vector<PrimitivePtr> primitives_;
     };
 }  // namespace ompl_mm

@@ -1,6 +1,6 @@
-#include "ompl_mm/base/ManipulationModel.h"
+#include "ompl_mm/model/ManipulationModel.h"
 
-#include "ompl_mm/scene/InputError.h"
+#include "ompl_core/io/InputError.h"
 
 #include <cmath>
 
@@ -15,7 +15,7 @@ namespace ompl_mm
         }
         catch (const ompl::Exception &e)
         {
-            throw InputError(scene_.robot.where, e.what());
+            throw ompl_core::InputError(scene_.robot.where, e.what());
         }
 
         mobileBase_ = robot_.dof() > 0;

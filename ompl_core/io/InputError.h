@@ -1,0 +1,24 @@
+/* The exception for bad user input (scene files, URDF files, parameters, command lines): its
+   message starts with "file:line: " when the place is known, so a user can jump to the fault. */
+#pragma once
+
+#include "ompl_core/io/SourceLocation.h"
+
+#include <ompl/util/Exception.h>
+
+#include <string>
+
+namespace ompl_core
+{
+    /** Thrown for any fault of the user's input; an ompl::Exception, so OMPL's habits apply. */
+    class InputError : public ompl::Exception
+    {
+    public:
+        /** The message is prefixed with "file:line: ", or "file: " when where.line is 0, or nothing
+            when where.file is empty. */
+        InputError(const SourceLocation &where, const std::string &message);
+
+        /** A message that names no file (e.g. a command-line option). */
+        explicit InputError(const std::string &message);
+    };
+}  // namespace ompl_core

@@ -1,0 +1,87 @@
+/* Planners by name: each library registers the planners that can plan on its setups, and the
+   apps, the benchmark tool and user code pick one by name. A user's own planner joins with one
+   add() call. */
+#pragma once
+
+#include "ompl_core/io/InputError.h"
+
+#include <ompl/base/Planner.h>
+
+#include <algorithm>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ompl_core
+{
+    /** Setup is the setup type the factories build planners for (e.g. ompl_phys::PhysicsSetup). */
+    template <typename Setup>
+    class PlannerRegistry
+    {
+    public:
+        /** Makes a planner for a setup; may also configure the setup (e.g. an objective). */
+        using Factory = std::function<ompl::base::PlannerPtr(Setup &)>;
+
+        /** Registers a planner; description is one line for help texts.
+            @throws ompl::Exception when name is empty or already registered. */
+        void add(const std::string &name, const std::string &description, Factory factory)
+        {
+            if (name.empty() || has(name))
+                throw ompl::Exception("PlannerRegistry", "planner name '" + name + "' is empty or taken");
+            entries_.push_back({name, description, std::move(factory)});
+        }
+
+        bool has(const std::string &name) const { return find(name) != entries_.end(); }
+
+        /** Names in registration order. */
+        std::vector<std::string> names() const
+        {
+            std::vector<std::string> all;
+            for (const Entry &entry : entries_)
+                all.push_back(entry.name);
+            return all;
+        }
+
+        /** "name, name, …" in registration order. */
+        std::string nameList() const
+        {
+            std::string list;
+            for (const Entry &entry : entries_)
+                list += (list.empty() ? "" : ", ") + entry.name;
+            return list;
+        }
+
+        const std::string &description(const std::string &name) const { return entry(name).description; }
+
+        /** A new planner of that name for setup. @throws InputError for an unknown name. */
+        ompl::base::PlannerPtr make(const std::string &name, Setup &setup) const
+        {
+            return entry(name).factory(setup);
+        }
+
+    private:
+        struct Entry
+        {
+            std::string name;
+            std::string description;
+            Factory factory;
+        };
+
+        typename std::vector<Entry>::const_iterator find(const std::string &name) const
+        {
+            return std::find_if(entries_.begin(), entries_.end(),
+                                [&name](const Entry &entry) { return entry.name == name; });
+        }
+
+        const Entry &entry(const std::string &name) const
+        {
+            const auto found = find(name);
+            if (found == entries_.end())
+                throw InputError("unknown planner '" + name + "' (known: " + nameList() + ")");
+            return *found;
+        }
+
+        std::vector<Entry> entries_;
+    };
+}  // namespace ompl_core

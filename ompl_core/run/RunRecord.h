@@ -1,0 +1,70 @@
+/* What one planning run was asked to do and what came of it, in one shape for every planner of
+   both libraries: the apps write it as JSON, the benchmark scripts read that JSON, and benchmark
+   logs take their run properties from it. */
+#pragma once
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace ompl_core
+{
+    /** What a run was asked to do. */
+    struct RunDescription
+    {
+        std::string scene;      ///< scene name
+        std::string planner;    ///< planner name, as in the planner registry
+        std::uint32_t seed{0};  ///< random seed
+        double timeLimit{0.0};  ///< seconds
+    };
+
+    /** Named values in a fixed order: numbers, counts, flags, texts, lists of texts and nested
+        records (e.g. "stats" with its times and counters). Keys are unique within a record. */
+    class RunRecord
+    {
+    public:
+        struct Entry;
+
+        RunRecord &addNumber(const std::string &key, double value);
+        RunRecord &addCount(const std::string &key, std::uint64_t value);
+        RunRecord &addFlag(const std::string &key, bool value);
+        RunRecord &addText(const std::string &key, const std::string &value);
+        RunRecord &addTexts(const std::string &key, const std::vector<std::string> &values);
+        RunRecord &addRecord(const std::string &key, const RunRecord &value);
+
+        const std::vector<Entry> &entries() const { return entries_; }
+        bool empty() const { return entries_.empty(); }
+
+        /** The entry at a dotted path ("stats.iterations"), or nullptr. */
+        const Entry *find(const std::string &path) const;
+
+    private:
+        /** @throws ompl::Exception when key is empty, holds a '.', or is already used. */
+        RunRecord &add(Entry entry);
+
+        std::vector<Entry> entries_;
+    };
+
+    struct RunRecord::Entry
+    {
+        std::string key;
+        std::variant<double, std::uint64_t, bool, std::string, std::vector<std::string>, RunRecord> value;
+    };
+
+    /** The outcome of one run. */
+    struct RunResult
+    {
+        RunDescription run;
+        bool solved{false};       ///< an exact solution was found
+        bool approximate{false};  ///< only an approximate solution was found
+        std::string status;       ///< OMPL's PlannerStatus as text
+        double time{0.0};         ///< planning time, seconds
+        RunRecord details;        ///< the library's own values (statistics, path, metrics), in output order
+    };
+
+    /** Writes result as one JSON object: scene, planner, seed, time_limit_s, solved, approximate,
+        status, time_s, then the details. Non-finite numbers are written as null. */
+    void writeRunJson(std::ostream &out, const RunResult &result);
+}  // namespace ompl_core

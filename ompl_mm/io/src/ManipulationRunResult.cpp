@@ -1,0 +1,53 @@
+#include "ompl_mm/io/ManipulationRunResult.h"
+
+#include <ompl/base/PlannerData.h>
+
+namespace ompl_mm
+{
+    namespace
+    {
+        ompl_core::RunRecord statisticsRecord(const MOPLStatistics &s)
+        {
+            ompl_core::RunRecord stats;
+            stats.addNumber("time_sampling_s", s.samplingTime)
+                .addNumber("time_nearest_s", s.nearestTime)
+                .addNumber("time_propagate_s", s.propagateTime)
+                .addNumber("time_connect_s", s.connectTime)
+                .addNumber("time_smoothing_s", s.smoothingTime)
+                .addNumber("time_ik_s", 0.0)
+                .addCount("iterations", s.iterations)
+                .addCount("restarts", s.restarts)
+                .addCount("collision_queries", s.collisionQueries)
+                .addCount("collision_queries_free", s.freeCollisionQueries);
+            return stats;
+        }
+    }  // namespace
+
+    ompl_core::RunResult manipulationRunResult(const ompl_core::RunDescription &run,
+                                               const ManipulationSetup &setup)
+    {
+        const ompl::base::ProblemDefinitionPtr &pdef = setup.getProblemDefinition();
+        ompl_core::RunResult result;
+        result.run = run;
+        result.solved = pdef->hasExactSolution();
+        result.approximate = pdef->hasApproximateSolution();
+        result.status = setup.getLastPlannerStatus().asString();
+        result.time = setup.getLastPlanComputationTime();
+
+        ompl::base::PlannerData data(setup.getSpaceInformation());
+        setup.getPlanner()->getPlannerData(data);
+        result.details.addCount("tree_vertices", data.numVertices()).addCount("tree_edges", data.numEdges());
+        result.details.addRecord("stats", statisticsRecord(setup.mopl()->statistics()));
+        if (result.solved)
+        {
+            const ManipulationPath &path = setup.manipulationPath();
+            ompl_core::RunRecord primitives;
+            for (const auto &[kind, count] : path.primitiveCounts())
+                primitives.addCount(kind, count);
+            result.details.addNumber("path_length_m", path.toolPathLength())
+                .addCount("path_vertices", path.getStateCount())
+                .addRecord("primitives", primitives);
+        }
+        return result;
+    }
+}  // namespace ompl_mm

@@ -1,0 +1,99 @@
+#include "ompl_mm/setup/ManipulationSetup.h"
+
+#include "ompl_core/io/InputError.h"
+
+namespace ompl_mm
+{
+    namespace
+    {
+        RobotModel loadRobot(const Scene &scene)
+        {
+            try
+            {
+                return RobotModel::fromUrdfFile(scene.robot.urdfFile);
+            }
+            catch (const ompl::Exception &e)
+            {
+                throw ompl_core::InputError(scene.robot.where, e.what());
+            }
+        }
+
+        ManipulationModelPtr makeModel(const Scene &scene)
+        {
+            if (scene.planner != "mopl")
+                throw ompl_core::InputError(ompl_core::SourceLocation{scene.file, 0},
+                                            "unknown planner '" + scene.planner + "' (known: mopl)");
+            return std::make_shared<ManipulationModel>(scene, loadRobot(scene));
+        }
+    }  // namespace
+
+    ManipulationSetup::ManipulationSetup(const Scene &scene, const PrimitiveFactory &factory)
+        : ompl::geometric::SimpleSetup(std::make_shared<ManipulationStateSpace>(makeModel(scene)))
+    {
+        space_ = std::static_pointer_cast<ManipulationStateSpace>(getStateSpace());
+        model_ = space_->model();
+        checker_ = std::make_shared<ManipulationValidityChecker>(si_);
+        setStateValidityChecker(checker_);
+        setStartFromScene(scene);
+        goal_ = std::make_shared<ManipulationGoal>(si_);
+        setGoal(goal_);
+        primitives_ = factory.build(scene.primitives, space_.get());
+        setPlannerByName(scene.planner);
+        ompl_core::applyParameters(*planner_, scene.plannerParams);
+    }
+
+    ompl_core::PlannerRegistry<ManipulationSetup> &ManipulationSetup::plannerRegistry()
+    {
+        static ompl_core::PlannerRegistry<ManipulationSetup> registry = []
+        {
+            ompl_core::PlannerRegistry<ManipulationSetup> planners;
+            planners.add("mopl", "MOPL, the multi-modal path planner",
+                         [](ManipulationSetup &setup)
+                         { return std::make_shared<MOPL>(setup.getSpaceInformation(), setup.primitives()); });
+            return planners;
+        }();
+        return registry;
+    }
+
+    void ManipulationSetup::setPlannerByName(const std::string &name)
+    {
+        setPlanner(plannerRegistry().make(name, *this));
+    }
+
+    std::shared_ptr<MOPL> ManipulationSetup::mopl() const
+    {
+        return std::dynamic_pointer_cast<MOPL>(planner_);
+    }
+
+    void ManipulationSetup::setStartFromScene(const Scene &scene)
+    {
+        const RobotModel &robot = model_->robot();
+        if (scene.robotStart.size() != robot.dof())
+            throw ompl_core::InputError(scene.robotStartWhere,
+                                        "start has " + std::to_string(scene.robotStart.size()) +
+                                            " joint values but robot '" + robot.name() + "' has " +
+                                            std::to_string(robot.dof()) + " moving joints");
+        ompl::base::ScopedState<> start(space_);
+        std::copy(scene.robotStart.begin(), scene.robotStart.end(), space_->robotValues(start.get()));
+        for (unsigned int i = 0; i < model_->objectCount(); ++i)
+        {
+            const MovableObject &object = scene.objects[i];
+            if (model_->restingSurface(object.start.position) < 0)
+                throw ompl_core::InputError(object.where,
+                                            "object '" + object.name + "' starts on no support surface");
+            space_->setObjectPose(start.get(), i, object.start);
+        }
+        const std::string reason = checker_->explain(start.get());
+        if (!reason.empty())
+            throw ompl_core::InputError(scene.robotStartWhere, "the start state is invalid: " + reason);
+        setStartState(start);
+    }
+
+    ManipulationPath &ManipulationSetup::manipulationPath() const
+    {
+        auto *path = dynamic_cast<ManipulationPath *>(pdef_->getSolutionPath().get());
+        if (!path)
+            throw ompl::Exception("ManipulationSetup", "no manipulation path has been found");
+        return *path;
+    }
+}  // namespace ompl_mm
