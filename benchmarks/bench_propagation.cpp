@@ -36,7 +36,8 @@ namespace
         const auto &si = setup.getSpaceInformation();
         auto sampler = si->allocControlSampler();
         Walk walk;
-        ompl::base::ScopedState<> current(si->getStateSpace(), setup.getProblemDefinition()->getStartState(0));
+        ompl::base::ScopedState<> current(si->getStateSpace(),
+                                          setup.getProblemDefinition()->getStartState(0));
         ompl::control::Control *control = si->allocControl();
         for (std::size_t i = 0; i < steps; ++i)
         {
@@ -45,7 +46,8 @@ namespace
             walk.states.push_back(si->cloneState(current.get()));
             walk.controls.push_back(si->cloneControl(control));
             ompl::base::ScopedState<> next(si->getStateSpace());
-            si->getStatePropagator()->propagate(current.get(), control, si->getPropagationStepSize(), next.get());
+            si->getStatePropagator()->propagate(current.get(), control, si->getPropagationStepSize(),
+                                                next.get());
             if (si->isValid(next.get()))
                 current = next;
             else
@@ -73,7 +75,7 @@ namespace
     /** Seconds per ODE sub-step of a bare loop from every walk state with its force. */
     double bareSecondsPerSubstep(ompl_phys::PhysicsSetup &setup, const Walk &walk)
     {
-        ompl_phys::PhysicsWorld world(setup.scene());
+        ompl_phys::PhysicsWorld world(setup.world().scenePtr());
         const unsigned int substeps = setup.scene().contact.substeps;
         const double dt = setup.scene().limits.stepSize / substeps;
         std::vector<ompl_phys::BodyStates> states(walk.states.size());
@@ -81,7 +83,8 @@ namespace
         for (std::size_t i = 0; i < walk.states.size(); ++i)
         {
             setup.physicsSpace().readState(walk.states[i], states[i]);
-            const double *f = walk.controls[i]->as<ompl::control::RealVectorControlSpace::ControlType>()->values;
+            const double *f =
+                walk.controls[i]->as<ompl::control::RealVectorControlSpace::ControlType>()->values;
             forces.emplace_back(f[0], f[1]);
         }
         const auto start = Clock::now();
@@ -132,8 +135,8 @@ int main(int argc, char **argv)
             propagated = std::min(propagated, propagatorSecondsPerSubstep(setup, walk));
             bare = std::min(bare, bareSecondsPerSubstep(setup, walk));
         }
-        std::cout << std::fixed << std::setprecision(2) << "| " << scene.name << " | " << 1e6 * propagated << " | "
-                  << 1e6 * bare << " | " << propagated / bare << " |\n";
+        std::cout << std::fixed << std::setprecision(2) << "| " << scene.name << " | " << 1e6 * propagated
+                  << " | " << 1e6 * bare << " | " << propagated / bare << " |\n";
         for (std::size_t i = 0; i < walk.states.size(); ++i)
         {
             setup.getSpaceInformation()->freeState(walk.states[i]);

@@ -5,6 +5,8 @@
    goal and, when the goal is occupied, towards clearing it. */
 #pragma once
 
+#include <memory>
+
 #include "ompl_phys/base/PhysicsStateSpace.h"
 #include "ompl_phys/knowledge/ManipulationKnowledge.h"
 
@@ -19,9 +21,9 @@ namespace ompl_phys
         /** Spare distance between the robot on the goal and a body moved off it, m. */
         static constexpr double CLEARANCE = 0.02;
 
-        /** startStates: the bodies' start; knowledge must outlive the goal. */
-        PhysicsGoal(const ompl::base::SpaceInformationPtr &si, const ManipulationKnowledge &knowledge,
-                    BodyStates startStates);
+        /** startStates: the bodies' start; the goal shares knowledge. */
+        PhysicsGoal(const ompl::base::SpaceInformationPtr &si,
+                    std::shared_ptr<const ManipulationKnowledge> knowledge, BodyStates startStates);
 
         /** Distance of the robot centre from the disc's centre; satisfied up to the disc's radius. */
         double distanceGoal(const ompl::base::State *state) const override;
@@ -33,7 +35,7 @@ namespace ompl_phys
 
     private:
         const PhysicsStateSpace &space_;
-        const ManipulationKnowledge &knowledge_;
+        std::shared_ptr<const ManipulationKnowledge> knowledge_;
         BodyStates start_;
         Eigen::Vector2d centre_;
         mutable ompl::RNG rng_;

@@ -38,7 +38,7 @@ namespace ompl_phys
 
         /** One component per moving body: the robot, then the movable bodies in scene order. The scene
             must outlive the space. */
-        explicit PhysicsStateSpace(const PhysicsScene &scene);
+        explicit PhysicsStateSpace(PhysicsScenePtr scene);
 
         std::size_t movingBodyCount() const { return getSubspaceCount(); }
 
@@ -48,7 +48,7 @@ namespace ompl_phys
         /** Robot centre on the floor (x, y). */
         Eigen::Vector2d robotPosition(const ompl::base::State *state) const;
 
-        const PhysicsScene &scene() const { return scene_; }
+        const PhysicsScene &scene() const { return *scene_; }
 
         ompl::base::State *allocState() const override;
         void freeState(ompl::base::State *state) const override;
@@ -56,6 +56,6 @@ namespace ompl_phys
         ompl::base::StateSamplerPtr allocDefaultStateSampler() const override;
 
     private:
-        const PhysicsScene &scene_;
+        PhysicsScenePtr scene_;
     };
 }  // namespace ompl_phys

@@ -3,6 +3,8 @@
    Contacts are judged during propagation, where they happen; see ManipulationKnowledge. */
 #pragma once
 
+#include <memory>
+
 #include "ompl_phys/base/PhysicsStateSpace.h"
 #include "ompl_phys/knowledge/ManipulationKnowledge.h"
 
@@ -13,9 +15,9 @@ namespace ompl_phys
     class PhysicsValidityChecker : public ompl::base::StateValidityChecker
     {
     public:
-        /** knowledge must outlive the checker. */
+        /** Shares the knowledge it judges by. */
         PhysicsValidityChecker(const ompl::base::SpaceInformationPtr &si,
-                               const ManipulationKnowledge &knowledge);
+                               std::shared_ptr<const ManipulationKnowledge> knowledge);
 
         bool isValid(const ompl::base::State *state) const override;
 
@@ -24,6 +26,6 @@ namespace ompl_phys
 
     private:
         const PhysicsStateSpace &space_;
-        const ManipulationKnowledge &knowledge_;
+        std::shared_ptr<const ManipulationKnowledge> knowledge_;
     };
 }  // namespace ompl_phys

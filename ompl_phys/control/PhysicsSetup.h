@@ -25,8 +25,11 @@ namespace ompl_phys
     class PhysicsSetup : public ompl::control::SimpleSetup
     {
     public:
-        /** @throws ompl_core::InputError naming the scene file and line when the start breaks a rule or
+        /** Shares scene (the world, space and knowledge keep it alive).
+            @throws ompl_core::InputError naming the scene file and line when the start breaks a rule or
             overlaps something, or a fixed body covers the goal. */
+        explicit PhysicsSetup(PhysicsScenePtr scene);
+        /** Plans on a copy of scene. */
         explicit PhysicsSetup(const PhysicsScene &scene);
         PhysicsSetup(const PhysicsSetup &) = delete;
         PhysicsSetup &operator=(const PhysicsSetup &) = delete;
@@ -37,6 +40,8 @@ namespace ompl_phys
         const PhysicsStateSpace &physicsSpace() const { return *space_; }
         const PhysicsStatePropagator &propagator() const { return *propagator_; }
         const std::shared_ptr<RobotGridDecomposition> &decomposition() const { return decomposition_; }
+        const std::shared_ptr<PhysicsWorld> &worldPtr() const { return world_; }
+        const std::shared_ptr<const ManipulationKnowledge> &knowledgePtr() const { return knowledge_; }
 
         /** The control planners that can plan on a PhysicsSetup: rrt, est, kpiece, sycloprrt,
             syclopest, pdst, sst. Add your own with add(). */
@@ -52,13 +57,12 @@ namespace ompl_phys
         bool haveExactSolution() const;
 
     private:
-        /** Takes ownership of the world, which the space information refers to. */
-        explicit PhysicsSetup(std::unique_ptr<PhysicsWorld> world);
+        explicit PhysicsSetup(std::shared_ptr<PhysicsWorld> world);
         static ompl::control::SpaceInformationPtr spaceInformation(const PhysicsWorld &world);
         void checkStart() const;
 
-        std::unique_ptr<PhysicsWorld> world_;
-        std::unique_ptr<ManipulationKnowledge> knowledge_;
+        std::shared_ptr<PhysicsWorld> world_;
+        std::shared_ptr<const ManipulationKnowledge> knowledge_;
         std::shared_ptr<PhysicsStateSpace> space_;
         std::shared_ptr<PhysicsStatePropagator> propagator_;
         std::shared_ptr<RobotGridDecomposition> decomposition_;

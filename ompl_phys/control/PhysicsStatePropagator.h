@@ -28,9 +28,10 @@ namespace ompl_phys
             std::array<unsigned long long, VIOLATION_KINDS> stops{};  ///< propagations ended, by violation
         };
 
-        /** world and knowledge must outlive the propagator. */
-        PhysicsStatePropagator(const ompl::control::SpaceInformationPtr &si, PhysicsWorld &world,
-                               const ManipulationKnowledge &knowledge);
+        /** Shares the world it simulates in and the knowledge it judges by. */
+        PhysicsStatePropagator(const ompl::control::SpaceInformationPtr &si,
+                               std::shared_ptr<PhysicsWorld> world,
+                               std::shared_ptr<const ManipulationKnowledge> knowledge);
 
         void propagate(const ompl::base::State *state, const ompl::control::Control *control, double duration,
                        ompl::base::State *result) const override;
@@ -42,8 +43,8 @@ namespace ompl_phys
 
     private:
         const PhysicsStateSpace &space_;
-        PhysicsWorld &world_;
-        const ManipulationKnowledge &knowledge_;
+        std::shared_ptr<PhysicsWorld> world_;
+        std::shared_ptr<const ManipulationKnowledge> knowledge_;
         double stepSize_;
         unsigned int substepsPerStep_;
         mutable BodyStates states_;

@@ -14,14 +14,15 @@ namespace ompl_phys
     public:
         static constexpr int DEFAULT_CELLS_PER_SIDE = 10;
 
-        /** space must outlive the decomposition. */
-        RobotGridDecomposition(const PhysicsStateSpace &space, int cellsPerSide = DEFAULT_CELLS_PER_SIDE);
+        /** Shares the space whose robot position it reads. */
+        explicit RobotGridDecomposition(std::shared_ptr<const PhysicsStateSpace> space,
+                                        int cellsPerSide = DEFAULT_CELLS_PER_SIDE);
 
         void project(const ompl::base::State *state, std::vector<double> &coord) const override;
         void sampleFullState(const ompl::base::StateSamplerPtr &sampler, const std::vector<double> &coord,
                              ompl::base::State *state) const override;
 
     private:
-        const PhysicsStateSpace &space_;
+        std::shared_ptr<const PhysicsStateSpace> space_;
     };
 }  // namespace ompl_phys

@@ -26,7 +26,7 @@ namespace ompl_phys
     public:
         /** scene must outlive the knowledge. Moving bodies are numbered as in PhysicsWorld: the robot,
             then the free and constraint-oriented bodies in scene order. */
-        explicit ManipulationKnowledge(const PhysicsScene &scene);
+        explicit ManipulationKnowledge(PhysicsScenePtr scene);
 
         /** Whether the robot, centred at robotCentre, may touch scene body `body` in state bodyState
             (ignored for fixed and free bodies). */
@@ -70,7 +70,7 @@ namespace ompl_phys
             Eigen::Vector2d axis;
         };
 
-        const PhysicsScene &scene_;
+        PhysicsScenePtr scene_;
         std::vector<FixedFootprint> fixed_;
         std::vector<std::size_t> movable_;      ///< scene body of each moving body after the robot
         std::vector<std::size_t> movingIndex_;  ///< moving index of each scene body (0: fixed)

@@ -9,6 +9,7 @@
 
 #include <Eigen/Geometry>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -142,4 +143,7 @@ namespace ompl_phys
         /** Indices of the bodies that move (free and constrained), in scene order. */
         std::vector<std::size_t> movableBodies() const;
     };
+
+    /** How the objects that outlive a call hold a scene: shared, never a reference that can dangle. */
+    using PhysicsScenePtr = std::shared_ptr<const PhysicsScene>;
 }  // namespace ompl_phys

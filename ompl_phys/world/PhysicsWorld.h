@@ -17,12 +17,13 @@ namespace ompl_phys
     {
     public:
         /** @throws ompl::Exception for shapes ODE cannot simulate (a movable prism). */
-        explicit PhysicsWorld(const PhysicsScene &scene);
+        explicit PhysicsWorld(PhysicsScenePtr scene);
         ~PhysicsWorld();
         PhysicsWorld(const PhysicsWorld &) = delete;
         PhysicsWorld &operator=(const PhysicsWorld &) = delete;
 
-        const PhysicsScene &scene() const { return scene_; }
+        const PhysicsScene &scene() const { return *scene_; }
+        const PhysicsScenePtr &scenePtr() const { return scene_; }
 
         /** Robot plus movable bodies. */
         std::size_t movingBodyCount() const { return 1 + movable_.size(); }
@@ -60,7 +61,7 @@ namespace ompl_phys
         void collide();
         void handlePair(void *geomA, void *geomB);
 
-        const PhysicsScene scene_;
+        PhysicsScenePtr scene_;
         std::vector<std::size_t> movable_;
         std::unique_ptr<Handles> handles_;
         std::vector<std::size_t> touches_;

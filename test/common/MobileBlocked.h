@@ -1,4 +1,4 @@
-// Shared test helpers: the MOBILE BLOCKED scene and fixture, state and scene editing, ompl_core::InputError
+// Shared test helpers: the MOBILE BLOCKED scene and fixture, state and scene editing, InputError
 // capture.
 #pragma once
 

@@ -8,10 +8,10 @@
 namespace ompl_phys
 {
     PhysicsGoal::PhysicsGoal(const ompl::base::SpaceInformationPtr &si,
-                             const ManipulationKnowledge &knowledge, BodyStates startStates)
+                             std::shared_ptr<const ManipulationKnowledge> knowledge, BodyStates startStates)
         : ompl::base::GoalSampleableRegion(si),
           space_(*si->getStateSpace()->as<PhysicsStateSpace>()),
-          knowledge_(knowledge),
+          knowledge_(std::move(knowledge)),
           start_(std::move(startStates)),
           centre_(space_.scene().goal.centre)
     {
@@ -31,7 +31,7 @@ namespace ompl_phys
         const Eigen::Vector2d at = centre_ + radius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
         BodyStates states = start_;
         states[0].position.head<2>() = at;
-        knowledge_.clearGoal(states, at, CLEARANCE);
+        knowledge_->clearGoal(states, at, CLEARANCE);
         space_.writeState(states, state);
     }
 

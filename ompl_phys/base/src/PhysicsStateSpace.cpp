@@ -1,5 +1,7 @@
 #include "ompl_phys/base/PhysicsStateSpace.h"
 
+#include <ompl/util/Exception.h>
+
 #include "ompl_phys/base/PhysicsStateSampler.h"
 
 namespace ompl_phys
@@ -48,15 +50,17 @@ namespace ompl_phys
         }
     }  // namespace
 
-    PhysicsStateSpace::PhysicsStateSpace(const PhysicsScene &scene) : scene_(scene)
+    PhysicsStateSpace::PhysicsStateSpace(PhysicsScenePtr scene) : scene_(std::move(scene))
     {
+        if (!scene_)
+            throw ompl::Exception("PhysicsStateSpace", "needs a scene, got none");
         setName("Physics" + getName());
-        const PlanningLimits &limits = scene.limits;
+        const PlanningLimits &limits = scene_->limits;
         addSubspace(
-            bodySpace(scene.robot.name, limits.robotRegion, limits.maxRobotSpeed, limits.maxAngularSpeed),
+            bodySpace(scene_->robot.name, limits.robotRegion, limits.maxRobotSpeed, limits.maxAngularSpeed),
             ROBOT_WEIGHT);
-        for (std::size_t index : scene.movableBodies())
-            addSubspace(bodySpace(scene.bodies[index].name, limits.bodyRegion, limits.maxBodySpeed,
+        for (std::size_t index : scene_->movableBodies())
+            addSubspace(bodySpace(scene_->bodies[index].name, limits.bodyRegion, limits.maxBodySpeed,
                                   limits.maxAngularSpeed),
                         BODY_WEIGHT);
         lock();

@@ -5,10 +5,10 @@
 namespace ompl_phys
 {
     PhysicsValidityChecker::PhysicsValidityChecker(const ompl::base::SpaceInformationPtr &si,
-                                                   const ManipulationKnowledge &knowledge)
+                                                   std::shared_ptr<const ManipulationKnowledge> knowledge)
         : ompl::base::StateValidityChecker(si),
           space_(*si->getStateSpace()->as<PhysicsStateSpace>()),
-          knowledge_(knowledge)
+          knowledge_(std::move(knowledge))
     {
     }
 
@@ -24,6 +24,6 @@ namespace ompl_phys
             return simulated;
         thread_local BodyStates states;
         space_.readState(state, states);
-        return knowledge_.checkStates(states);
+        return knowledge_->checkStates(states);
     }
 }  // namespace ompl_phys

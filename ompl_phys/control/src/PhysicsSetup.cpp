@@ -50,37 +50,42 @@ namespace ompl_phys
     }  // namespace
 
     PhysicsSetup::PhysicsSetup(const PhysicsScene &scene)
-        : PhysicsSetup(std::make_unique<PhysicsWorld>(scene))
+        : PhysicsSetup(std::make_shared<const PhysicsScene>(scene))
+    {
+    }
+
+    PhysicsSetup::PhysicsSetup(PhysicsScenePtr scene)
+        : PhysicsSetup(std::make_shared<PhysicsWorld>(std::move(scene)))
     {
     }
 
     oc::SpaceInformationPtr PhysicsSetup::spaceInformation(const PhysicsWorld &world)
     {
-        auto space = std::make_shared<PhysicsStateSpace>(world.scene());
+        auto space = std::make_shared<PhysicsStateSpace>(world.scenePtr());
         space->registerDefaultProjection(std::make_shared<RobotProjection>(space.get()));
         return std::make_shared<oc::SpaceInformation>(space,
                                                       forceSpace(space, world.scene().limits.maxForce));
     }
 
-    PhysicsSetup::PhysicsSetup(std::unique_ptr<PhysicsWorld> world)
+    PhysicsSetup::PhysicsSetup(std::shared_ptr<PhysicsWorld> world)
         : oc::SimpleSetup(spaceInformation(*world)),
           world_(std::move(world)),
-          knowledge_(std::make_unique<ManipulationKnowledge>(world_->scene())),
+          knowledge_(std::make_shared<const ManipulationKnowledge>(world_->scenePtr())),
           space_(std::static_pointer_cast<PhysicsStateSpace>(si_->getStateSpace()))
     {
         const PlanningLimits &limits = world_->scene().limits;
         si_->setPropagationStepSize(limits.stepSize);
         si_->setMinMaxControlDuration(limits.minControlSteps, limits.maxControlSteps);
-        si_->setStateValidityChecker(std::make_shared<PhysicsValidityChecker>(si_, *knowledge_));
-        propagator_ = std::make_shared<PhysicsStatePropagator>(si_, *world_, *knowledge_);
+        si_->setStateValidityChecker(std::make_shared<PhysicsValidityChecker>(si_, knowledge_));
+        propagator_ = std::make_shared<PhysicsStatePropagator>(si_, world_, knowledge_);
         si_->setStatePropagator(propagator_);
-        decomposition_ = std::make_shared<RobotGridDecomposition>(*space_);
+        decomposition_ = std::make_shared<RobotGridDecomposition>(space_);
 
         checkStart();
         ompl::base::ScopedState<> start(space_);
         space_->writeState(world_->startStates(), start.get());
         setStartState(start);
-        setGoal(std::make_shared<PhysicsGoal>(si_, *knowledge_, world_->startStates()));
+        setGoal(std::make_shared<PhysicsGoal>(si_, knowledge_, world_->startStates()));
         setPlannerByName("kpiece");
     }
 

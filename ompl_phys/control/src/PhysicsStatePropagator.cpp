@@ -9,14 +9,14 @@
 namespace ompl_phys
 {
     PhysicsStatePropagator::PhysicsStatePropagator(const ompl::control::SpaceInformationPtr &si,
-                                                   PhysicsWorld &world,
-                                                   const ManipulationKnowledge &knowledge)
+                                                   std::shared_ptr<PhysicsWorld> world,
+                                                   std::shared_ptr<const ManipulationKnowledge> knowledge)
         : ompl::control::StatePropagator(si),
           space_(*si->getStateSpace()->as<PhysicsStateSpace>()),
-          world_(world),
-          knowledge_(knowledge),
-          stepSize_(world.scene().limits.stepSize),
-          substepsPerStep_(world.scene().contact.substeps)
+          world_(std::move(world)),
+          knowledge_(std::move(knowledge)),
+          stepSize_(world_->scene().limits.stepSize),
+          substepsPerStep_(world_->scene().contact.substeps)
     {
     }
 
@@ -37,17 +37,17 @@ namespace ompl_phys
 
         PhysicsWorld::resetRandomSeed();
         space_.readState(state, states_);
-        world_.setStates(states_);
+        world_->setStates(states_);
         Violation violation = Violation::None;
         for (unsigned int k = 0; k < substeps && violation == Violation::None; ++k)
         {
-            world_.step(Eigen::Vector2d(force[0], force[1]), dt);
+            world_->step(Eigen::Vector2d(force[0], force[1]), dt);
             ++counters_.substeps;
             // the robot's touches were found before the step: judge them at the poses of that moment
-            violation = knowledge_.checkTouches(world_.touches(), states_);
-            world_.readStates(states_);
+            violation = knowledge_->checkTouches(world_->touches(), states_);
+            world_->readStates(states_);
             if (violation == Violation::None)
-                violation = knowledge_.checkStates(states_);
+                violation = knowledge_->checkStates(states_);
         }
         space_.writeState(states_, result);
         result->as<PhysicsStateSpace::StateType>()->violation = violation;

@@ -15,15 +15,16 @@ namespace ompl_phys
         }
     }  // namespace
 
-    RobotGridDecomposition::RobotGridDecomposition(const PhysicsStateSpace &space, int cellsPerSide)
-        : ompl::control::GridDecomposition(cellsPerSide, 2, regionBounds(space.scene().limits.robotRegion)),
-          space_(space)
+    RobotGridDecomposition::RobotGridDecomposition(std::shared_ptr<const PhysicsStateSpace> space,
+                                                   int cellsPerSide)
+        : ompl::control::GridDecomposition(cellsPerSide, 2, regionBounds(space->scene().limits.robotRegion)),
+          space_(std::move(space))
     {
     }
 
     void RobotGridDecomposition::project(const ompl::base::State *state, std::vector<double> &coord) const
     {
-        const Eigen::Vector2d robot = space_.robotPosition(state);
+        const Eigen::Vector2d robot = space_->robotPosition(state);
         coord = {robot.x(), robot.y()};
     }
 
@@ -33,8 +34,8 @@ namespace ompl_phys
     {
         sampler->sampleUniform(state);
         BodyStates states;
-        space_.readState(state, states);
+        space_->readState(state, states);
         states[0].position.head<2>() = Eigen::Vector2d(coord[0], coord[1]);
-        space_.writeState(states, state);
+        space_->writeState(states, state);
     }
 }  // namespace ompl_phys

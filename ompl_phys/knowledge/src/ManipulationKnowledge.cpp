@@ -1,5 +1,7 @@
 #include "ompl_phys/knowledge/ManipulationKnowledge.h"
 
+#include <ompl/util/Exception.h>
+
 #include "ompl_phys/knowledge/Footprint.h"
 
 #include <cmath>
@@ -20,18 +22,27 @@ namespace ompl_phys
         {
             return velocity.cwiseAbs().maxCoeff() <= limit;
         }
+
+        PhysicsScenePtr requireScene(PhysicsScenePtr scene)
+        {
+            if (!scene)
+                throw ompl::Exception("ManipulationKnowledge", "needs a scene, got none");
+            return scene;
+        }
     }  // namespace
 
-    ManipulationKnowledge::ManipulationKnowledge(const PhysicsScene &scene)
-        : scene_(scene), movable_(scene.movableBodies()), movingIndex_(scene.bodies.size(), 0)
+    ManipulationKnowledge::ManipulationKnowledge(PhysicsScenePtr scene)
+        : scene_(requireScene(std::move(scene))),
+          movable_(scene_->movableBodies()),
+          movingIndex_(scene_->bodies.size(), 0)
     {
-        for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-            if (scene.bodies[i].kind == BodyKind::Fixed)
-                fixed_.push_back({i, scene.bodies[i].start.translation().head<2>(),
-                                  yawOf(Eigen::Quaterniond(scene.bodies[i].start.linear()))});
+        for (std::size_t i = 0; i < scene_->bodies.size(); ++i)
+            if (scene_->bodies[i].kind == BodyKind::Fixed)
+                fixed_.push_back({i, scene_->bodies[i].start.translation().head<2>(),
+                                  yawOf(Eigen::Quaterniond(scene_->bodies[i].start.linear()))});
         for (std::size_t i = 0; i < movable_.size(); ++i)
         {
-            const PhysicsBody &body = scene.bodies[movable_[i]];
+            const PhysicsBody &body = scene_->bodies[movable_[i]];
             movingIndex_[movable_[i]] = i + 1;
             const Eigen::Quaterniond start(body.start.linear());
             startAxes_.push_back({start, (start * body.push.axis).head<2>().normalized()});
@@ -41,7 +52,7 @@ namespace ompl_phys
     bool ManipulationKnowledge::touchAllowed(std::size_t body, const Eigen::Vector3d &robotCentre,
                                              const BodyState &bodyState) const
     {
-        const PhysicsBody &b = scene_.bodies[body];
+        const PhysicsBody &b = scene_->bodies[body];
         if (b.kind == BodyKind::Fixed)
             return false;
         if (b.kind == BodyKind::Free)
@@ -57,7 +68,7 @@ namespace ompl_phys
     {
         for (std::size_t body : touches)
         {
-            const BodyKind kind = scene_.bodies[body].kind;
+            const BodyKind kind = scene_->bodies[body].kind;
             if (kind == BodyKind::Fixed)
                 return Violation::TouchedFixedBody;
             if (kind != BodyKind::Constrained)
@@ -70,7 +81,7 @@ namespace ompl_phys
 
     Violation ManipulationKnowledge::checkStates(const BodyStates &states) const
     {
-        const PlanningLimits &limits = scene_.limits;
+        const PlanningLimits &limits = scene_->limits;
         for (const BodyState &s : states)
             if (!s.isFinite())
                 return Violation::NotFinite;
@@ -79,8 +90,8 @@ namespace ompl_phys
             return Violation::OutsideRegion;
         // the robot inside a fixed body (a sampled state, never a simulated one: ODE pushes it out)
         for (const FixedFootprint &f : fixed_)
-            if (footprintDistance(scene_.bodies[f.body].shape, f.position, f.yaw, robot.position.head<2>()) <
-                scene_.robot.radius)
+            if (footprintDistance(scene_->bodies[f.body].shape, f.position, f.yaw, robot.position.head<2>()) <
+                scene_->robot.radius)
                 return Violation::TouchedFixedBody;
         if (!withinSpeed(robot.linearVelocity, limits.maxRobotSpeed) ||
             !withinSpeed(robot.angularVelocity, limits.maxAngularSpeed))
@@ -88,7 +99,7 @@ namespace ompl_phys
         for (std::size_t i = 0; i < movable_.size(); ++i)
         {
             const BodyState &s = states[i + 1];
-            const PhysicsBody &body = scene_.bodies[movable_[i]];
+            const PhysicsBody &body = scene_->bodies[movable_[i]];
             if (!limits.bodyRegion.contains(s.position.head<2>()))
                 return Violation::OutsideRegion;
             if (!withinSpeed(s.linearVelocity, limits.maxBodySpeed) ||
@@ -108,12 +119,12 @@ namespace ompl_phys
     std::vector<std::size_t> ManipulationKnowledge::goalOccupants(const BodyStates &states) const
     {
         std::vector<std::size_t> occupants;
-        const double reachOfGoal = scene_.goal.radius + scene_.robot.radius;
+        const double reachOfGoal = scene_->goal.radius + scene_->robot.radius;
         for (std::size_t i = 0; i < movable_.size(); ++i)
         {
             const BodyState &s = states[i + 1];
-            if (footprintDistance(scene_.bodies[movable_[i]].shape, s.position.head<2>(),
-                                  yawOf(s.orientation), scene_.goal.centre) < reachOfGoal)
+            if (footprintDistance(scene_->bodies[movable_[i]].shape, s.position.head<2>(),
+                                  yawOf(s.orientation), scene_->goal.centre) < reachOfGoal)
                 occupants.push_back(i + 1);
         }
         return occupants;
@@ -123,8 +134,8 @@ namespace ompl_phys
     {
         std::vector<std::size_t> blocking;
         for (const FixedFootprint &f : fixed_)
-            if (footprintDistance(scene_.bodies[f.body].shape, f.position, f.yaw, scene_.goal.centre) <
-                scene_.robot.radius)
+            if (footprintDistance(scene_->bodies[f.body].shape, f.position, f.yaw, scene_->goal.centre) <
+                scene_->robot.radius)
                 blocking.push_back(f.body);
         return blocking;
     }
@@ -132,20 +143,20 @@ namespace ompl_phys
     void ManipulationKnowledge::clearGoal(BodyStates &states, const Eigen::Vector2d &robotGoal,
                                           double clearance) const
     {
-        const double needed = scene_.robot.radius + clearance;
+        const double needed = scene_->robot.radius + clearance;
         for (std::size_t i = 0; i < movable_.size(); ++i)
         {
             BodyState &s = states[i + 1];
-            const PhysicsBody &body = scene_.bodies[movable_[i]];
+            const PhysicsBody &body = scene_->bodies[movable_[i]];
             const double yaw = yawOf(s.orientation);
             const Eigen::Vector2d from = s.position.head<2>();
             auto clearAlong = [&](const Eigen::Vector2d &direction)
             {
-                for (double shift = 0.0; shift < scene_.limits.bodyRegion.diagonal().norm();
+                for (double shift = 0.0; shift < scene_->limits.bodyRegion.diagonal().norm();
                      shift += CLEARING_STEP)
                 {
                     const Eigen::Vector2d at = from + shift * direction;
-                    if (!scene_.limits.bodyRegion.contains(at))
+                    if (!scene_->limits.bodyRegion.contains(at))
                         return std::numeric_limits<double>::infinity();
                     if (footprintDistance(body.shape, at, yaw, robotGoal) >= needed)
                         return shift;

@@ -150,40 +150,40 @@ namespace ompl_phys
         }
     }  // namespace
 
-    PhysicsWorld::PhysicsWorld(const PhysicsScene &scene)
-        : scene_(scene), handles_(std::make_unique<Handles>())
+    PhysicsWorld::PhysicsWorld(PhysicsScenePtr scene)
+        : scene_(std::move(scene)), handles_(std::make_unique<Handles>())
     {
         initialiseOde();
-        movable_ = scene_.movableBodies();
+        movable_ = scene_->movableBodies();
         Handles &h = *handles_;
         h.world = dWorldCreate();
         h.space = dSimpleSpaceCreate(nullptr);  // few geoms; a fixed visiting order keeps runs identical
         h.contacts = dJointGroupCreate(0);
-        dWorldSetGravity(h.world, 0.0, 0.0, scene_.contact.gravity);
-        dWorldSetQuickStepNumIterations(h.world, static_cast<int>(scene_.contact.iterations));
+        dWorldSetGravity(h.world, 0.0, 0.0, scene_->contact.gravity);
+        dWorldSetQuickStepNumIterations(h.world, static_cast<int>(scene_->contact.iterations));
         dWorldSetContactSurfaceLayer(h.world, SURFACE_LAYER);
         dWorldSetAutoDisableFlag(h.world, 0);
 
-        h.tags.reserve(2 + scene_.bodies.size());
-        h.prismPlanes.reserve(scene_.bodies.size());
-        h.prismPoints.reserve(scene_.bodies.size());
-        h.prismPolygons.reserve(scene_.bodies.size());
+        h.tags.reserve(2 + scene_->bodies.size());
+        h.prismPlanes.reserve(scene_->bodies.size());
+        h.prismPoints.reserve(scene_->bodies.size());
+        h.prismPolygons.reserve(scene_->bodies.size());
         h.tags.push_back({GeomTag::Kind::Floor, 0});
         dGeomSetData(dCreatePlane(h.space, 0.0, 0.0, 1.0, 0.0), &h.tags.back());
 
         dBodyID robot = dBodyCreate(h.world);
         dMass robotMass;
-        dMassSetSphereTotal(&robotMass, scene_.robot.mass, scene_.robot.radius);
+        dMassSetSphereTotal(&robotMass, scene_->robot.mass, scene_->robot.radius);
         dBodySetMass(robot, &robotMass);
-        dGeomID robotGeom = dCreateSphere(h.space, scene_.robot.radius);
+        dGeomID robotGeom = dCreateSphere(h.space, scene_->robot.radius);
         dGeomSetBody(robotGeom, robot);
         h.tags.push_back({GeomTag::Kind::Robot, 0});
         dGeomSetData(robotGeom, &h.tags.back());
         h.bodies.push_back(robot);
 
-        for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
+        for (std::size_t i = 0; i < scene_->bodies.size(); ++i)
         {
-            const PhysicsBody &body = scene_.bodies[i];
+            const PhysicsBody &body = scene_->bodies[i];
             const bool prism = body.shape.kind == PhysicsShape::Kind::Prism;
             if (prism && body.kind != BodyKind::Fixed)
                 throw ompl::Exception("PhysicsWorld",
@@ -218,16 +218,16 @@ namespace ompl_phys
 
     const std::string &PhysicsWorld::movingBodyName(std::size_t movingIndex) const
     {
-        return movingIndex == 0 ? scene_.robot.name : scene_.bodies[sceneBodyOf(movingIndex)].name;
+        return movingIndex == 0 ? scene_->robot.name : scene_->bodies[sceneBodyOf(movingIndex)].name;
     }
 
     BodyStates PhysicsWorld::startStates() const
     {
         BodyStates states(movingBodyCount());
-        states[0].position = scene_.robot.start;
+        states[0].position = scene_->robot.start;
         for (std::size_t i = 1; i < states.size(); ++i)
         {
-            const Eigen::Isometry3d &start = scene_.bodies[sceneBodyOf(i)].start;
+            const Eigen::Isometry3d &start = scene_->bodies[sceneBodyOf(i)].start;
             states[i].position = start.translation();
             states[i].orientation = Eigen::Quaterniond(start.linear());
         }
@@ -309,8 +309,8 @@ namespace ompl_phys
         if (!bodyA && !bodyB)
             return;  // static geometry never moves
         std::array<dContactGeom, MAX_CONTACT_POINTS> points;
-        const int count =
-            dCollide(a, b, static_cast<int>(scene_.contact.maxContacts), points.data(), sizeof(dContactGeom));
+        const int count = dCollide(a, b, static_cast<int>(scene_->contact.maxContacts), points.data(),
+                                   sizeof(dContactGeom));
         if (count == 0)
             return;
         const auto *tagA = static_cast<const GeomTag *>(dGeomGetData(a));
@@ -329,9 +329,9 @@ namespace ompl_phys
             (tagB->kind == GeomTag::Kind::Robot && tagA->kind == GeomTag::Kind::Floor);
         dContact contact{};
         contact.surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
-        contact.surface.mu = robotOnFloor ? scene_.materials.robotFloor : scene_.materials.defaultMu;
-        contact.surface.soft_erp = scene_.contact.erp;
-        contact.surface.soft_cfm = scene_.contact.cfm;
+        contact.surface.mu = robotOnFloor ? scene_->materials.robotFloor : scene_->materials.defaultMu;
+        contact.surface.soft_erp = scene_->contact.erp;
+        contact.surface.soft_cfm = scene_->contact.cfm;
         for (int i = 0; i < count; ++i)
         {
             contact.geom = points[i];

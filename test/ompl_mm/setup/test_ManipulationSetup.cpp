@@ -6,6 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <ompl/base/PlannerTerminationCondition.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
 using namespace ompl_mm;
 using namespace ompl_mm::test;
 namespace ob = ompl::base;
@@ -64,6 +70,68 @@ TEST(ManipulationSetup, PlannerParametersAreApplied)
     EXPECT_NEAR(space.validSegmentCount(a, b), 1.0 / 0.05, 1.0);
     space.freeState(a);
     space.freeState(b);
+}
+
+TEST(ManipulationSetup, ConnectStepSetLaterIsTheCollisionResolution)
+{
+    ManipulationSetup setup(mobileBlockedScene());
+    setup.setup();
+    // after setup, through the declared parameter as a user or a cfg file would
+    ASSERT_TRUE(setup.getPlanner()->params().setParam("connect_step", "0.01"));
+    const ManipulationStateSpace &space = *setup.manipulationSpace();
+    ob::State *a = space.cloneState(setup.getProblemDefinition()->getStartState(0));
+    ob::State *b = space.cloneState(a);
+    space.robotValues(b)[0] -= 1.0;
+    EXPECT_NEAR(space.validSegmentCount(a, b), 1.0 / 0.01, 1.0);
+    space.freeState(a);
+    space.freeState(b);
+}
+
+TEST(ManipulationSetup, PlansAfterTheSceneIsGone)
+{
+    std::unique_ptr<ManipulationSetup> setup;
+    {
+        const Scene scene = mobileBlockedScene();
+        setup = std::make_unique<ManipulationSetup>(scene);
+    }
+    setup->mopl()->setSeed(1);
+    setup->solve(ob::plannerOrTerminationCondition(
+        ob::timedPlannerTerminationCondition(60.0),
+        ob::exactSolnPlannerTerminationCondition(setup->getProblemDefinition())));
+    ASSERT_TRUE(setup->getProblemDefinition()->hasExactSolution());
+    EXPECT_TRUE(setup->manipulationPath().check());
+    EXPECT_EQ(setup->model()->scene().name, "mobile_blocked");
+}
+
+TEST(ManipulationSetup, PlannerRegistryNamesMoplAndRejectsUnknownNames)
+{
+    EXPECT_EQ(ManipulationSetup::plannerRegistry().names(), std::vector<std::string>{"mopl"});
+    ManipulationSetup setup(mobileBlockedScene());
+    const std::string message = inputErrorOf([&] { setup.setPlannerByName("rrtconnect"); });
+    EXPECT_NE(message.find("unknown planner 'rrtconnect' (known: mopl)"), std::string::npos) << message;
+}
+
+TEST(ManipulationSetupInput, UnknownSceneParameterNamesItsLine)
+{
+    Scene scene = mobileBlockedScene();
+    scene.plannerParams.push_back({"no_such_parameter", "1", {"scene.xml", 42}});
+    const std::string message = setupError(scene);
+    EXPECT_EQ(
+        message.rfind("scene.xml:42: unknown parameter 'no_such_parameter' of planner MOPL (known: ", 0), 0u)
+        << message;
+}
+
+TEST(ManipulationSetupInput, BadSceneParameterValueNamesItsLineAndRange)
+{
+    Scene scene = mobileBlockedScene();
+    scene.plannerParams.push_back({"object_sample_probability", "1.5", {"scene.xml", 7}});
+    const std::string message = setupError(scene);
+    EXPECT_EQ(
+        message.rfind(
+            "scene.xml:7: bad value '1.5' for parameter 'object_sample_probability' of planner MOPL", 0),
+        0u)
+        << message;
+    EXPECT_NE(message.find("range 0.:0.05:1."), std::string::npos) << message;
 }
 
 TEST(ManipulationSetup, NoSolutionBeforeSolving)

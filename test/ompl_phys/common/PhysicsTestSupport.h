@@ -1,4 +1,4 @@
-// Shared helpers of the ompl_phys tests: the benchmark scenes, a small inline scene, ompl_core::InputError
+// Shared helpers of the ompl_phys tests: the benchmark scenes, a small inline scene, InputError
 // capture, bit-exact comparison of simulated states.
 #pragma once
 
@@ -8,6 +8,7 @@
 #include "ompl_phys/world/BodyState.h"
 
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,12 @@ namespace ompl_phys::test
     inline std::string benchmarkScenePath(int n)
     {
         return std::string(OMPL_MM_SCENES_DIR) + "/physics/scene" + std::to_string(n) + ".xml";
+    }
+
+    /** A shared copy of scene, as the world, the space and the knowledge hold one. */
+    inline PhysicsScenePtr shared(const PhysicsScene &scene)
+    {
+        return std::make_shared<const PhysicsScene>(scene);
     }
 
     /** The benchmark scene n (1, 2 or 3) from scenes/physics. */

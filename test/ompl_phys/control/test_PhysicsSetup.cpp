@@ -7,6 +7,8 @@
 #include "ompl_phys/control/PathSimulation.h"
 #include "ompl_phys/metrics/TrajectoryMetrics.h"
 
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/control/PlannerData.h>
 #include <ompl/control/planners/rrt/RRT.h>
 #include <ompl/control/spaces/RealVectorControlSpace.h>
 #include <ompl/util/Console.h>
@@ -217,6 +219,26 @@ TEST(PhysicsSetup, UsersCanRegisterTheirOwnPlanner)
     setup.setPlannerByName("test_rrt_with_bias_half");
     EXPECT_EQ(setup.getPlanner()->getName(), "TestRRT");
     EXPECT_THROW(registry.add("rrt", "a second rrt", nullptr), ompl::Exception);
+}
+
+TEST(PhysicsSetup, PlansAfterTheSceneIsGone)
+{
+    std::unique_ptr<PhysicsSetup> setup;
+    std::shared_ptr<const ManipulationKnowledge> knowledge;
+    {
+        const PhysicsScene scene = benchmarkScene(1);
+        setup = std::make_unique<PhysicsSetup>(scene);
+        knowledge = std::make_shared<const ManipulationKnowledge>(shared(scene));
+    }
+    ompl::RNG::setSeed(1);
+    setup->setPlannerByName("rrt");
+    // a bounded search: whatever it finds, every state it made must be judged by the scene's rules
+    setup->solve(ompl::base::IterationTerminationCondition(300));
+    ompl::control::PlannerData data(setup->getSpaceInformation());
+    setup->getPlanner()->getPlannerData(data);
+    EXPECT_GT(data.numVertices(), 1u);
+    EXPECT_EQ(setup->scene().name, "scene1");
+    EXPECT_EQ(knowledge->goalOccupants(setup->world().startStates()).size(), 0u);
 }
 
 TEST(PhysicsSetup, ProblemFollowsTheScene)

@@ -174,7 +174,7 @@ TEST_F(Propagation, EverySubStepIsChecked)
     ASSERT_GT(distanceToStartFootprint(scene(), wall, to), r);
     ASSERT_LT(distanceToStartFootprint(scene(), wall, corner + grazing * normal), r);
     BodyStates straight = robotAt(to.x(), to.y(), v, v);
-    ManipulationKnowledge knowledge(scene());
+    ManipulationKnowledge knowledge(shared(scene()));
     ASSERT_EQ(knowledge.checkStates(straight), Violation::None);
     EXPECT_EQ(grazed.violation, Violation::TouchedFixedBody);
     EXPECT_FALSE(grazed.valid);

@@ -65,7 +65,10 @@ namespace
     class SmallSceneKnowledge : public ::testing::Test
     {
     protected:
-        SmallSceneKnowledge() : scene_(smallScene()), knowledge_(scene_), start_(startStatesOf(scene_)) {}
+        SmallSceneKnowledge()
+            : scene_(smallScene()), knowledge_(shared(scene_)), start_(startStatesOf(scene_))
+        {
+        }
 
         const PhysicsScene scene_;
         const ManipulationKnowledge knowledge_;
@@ -229,7 +232,7 @@ TEST(ManipulationKnowledge, GoalOccupantsOfTheBenchmarkScenes)
     {
         SCOPED_TRACE("scene " + std::to_string(n));
         const PhysicsScene scene = benchmarkScene(n);
-        const ManipulationKnowledge knowledge(scene);
+        const ManipulationKnowledge knowledge(shared(scene));
         const BodyStates start = startStatesOf(scene);
         std::vector<std::size_t> expected;
         const std::vector<std::size_t> movable = scene.movableBodies();
@@ -249,9 +252,9 @@ TEST(ManipulationKnowledge, GoalOccupantsOfTheBenchmarkScenes)
     }
     // scene 3's occupant, named the way the app reports it
     const PhysicsScene scene3 = benchmarkScene(3);
-    const PhysicsWorld world(scene3);
+    const PhysicsWorld world(shared(scene3));
     const std::vector<std::size_t> occupants =
-        ManipulationKnowledge(scene3).goalOccupants(world.startStates());
+        ManipulationKnowledge(shared(scene3)).goalOccupants(world.startStates());
     ASSERT_EQ(occupants.size(), 1u);
     EXPECT_EQ(world.movingBodyName(occupants.front()), "cube4");
 }
@@ -259,7 +262,7 @@ TEST(ManipulationKnowledge, GoalOccupantsOfTheBenchmarkScenes)
 TEST(ManipulationKnowledge, ClearGoalSlidesTheConstrainedCubeAlongItsAxis)
 {
     const PhysicsScene scene = benchmarkScene(3);
-    const ManipulationKnowledge knowledge(scene);
+    const ManipulationKnowledge knowledge(shared(scene));
     const BodyStates start = startStatesOf(scene);
     const std::size_t cube4 = movingIndex(scene, "cube4");
     const PhysicsShape &shape = scene.bodies[scene.bodyIndex("cube4")].shape;
@@ -296,7 +299,7 @@ TEST(ManipulationKnowledge, ClearGoalSlidesTheConstrainedCubeAlongItsAxis)
 TEST(ManipulationKnowledge, ClearGoalMovesAFreeCubeStraightAway)
 {
     PhysicsScene scene = smallScene();
-    const ManipulationKnowledge knowledge(scene);
+    const ManipulationKnowledge knowledge(shared(scene));
     BodyStates states = startStatesOf(scene);
     const std::size_t loose = movingIndex(scene, "loose");
     const PhysicsShape &shape = scene.bodies[scene.bodyIndex("loose")].shape;
@@ -322,7 +325,7 @@ TEST(ManipulationKnowledge, FixedBodyOnTheGoal)
     const std::size_t wall = scene.bodyIndex("wall");
     scene.bodies[wall].start.translation() = Eigen::Vector3d(0.8, -0.6, 0.1);  // y from -0.7 to -0.5
     // the goal (0.8, -0.8) is 0.1 m from the wall: the robot (0.08) fits there
-    EXPECT_TRUE(ManipulationKnowledge(scene).fixedBodiesOnGoal().empty());
+    EXPECT_TRUE(ManipulationKnowledge(shared(scene)).fixedBodiesOnGoal().empty());
     scene.bodies[wall].start.translation().y() = -0.65;  // 0.05 m from the goal
-    EXPECT_EQ(ManipulationKnowledge(scene).fixedBodiesOnGoal(), std::vector<std::size_t>{wall});
+    EXPECT_EQ(ManipulationKnowledge(shared(scene)).fixedBodiesOnGoal(), std::vector<std::size_t>{wall});
 }

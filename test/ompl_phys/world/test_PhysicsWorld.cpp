@@ -56,7 +56,7 @@ namespace
 TEST(PhysicsWorld, StartStatesAreTheScenePosesAtRest)
 {
     const PhysicsScene scene = benchmarkScene(1);
-    PhysicsWorld world(scene);
+    PhysicsWorld world(shared(scene));
     const BodyStates start = world.startStates();
     ASSERT_EQ(world.movingBodyCount(), 1 + scene.movableBodies().size());
     ASSERT_EQ(start.size(), world.movingBodyCount());
@@ -89,7 +89,7 @@ TEST(PhysicsWorld, ForceDrivenRobotFollowsTheAnalyticTrajectory)
     // x with the new v), which after n steps of dt gives x0 + (F / m) dt^2 n (n + 1) / 2: the analytic
     // value plus F T dt / (2 m), first order in dt. That bias is the tolerance.
     const PhysicsScene scene = flatScene();
-    PhysicsWorld world(scene);
+    PhysicsWorld world(shared(scene));
     const double m = scene.robot.mass;
     const Eigen::Vector2d force(3.0, -1.5);
     const double T = 0.7;
@@ -115,7 +115,7 @@ TEST(PhysicsWorld, DrivenRobotErrorIsFirstOrderInTheStep)
 {
     // halving the step halves the deviation from x0 + F T^2 / (2 m) (see above)
     const PhysicsScene scene = flatScene();
-    PhysicsWorld world(scene);
+    PhysicsWorld world(shared(scene));
     const Eigen::Vector2d force(2.0, 1.0);
     const double T = 0.56;
     const Eigen::Vector2d analytic = force * T * T / (2.0 * scene.robot.mass);
@@ -131,7 +131,7 @@ TEST(PhysicsWorld, FreeFallFollowsTheAnalyticTrajectory)
     // dropped from 1 m, the robot falls for 0.3 s without reaching the floor: z = z0 + g T^2 / 2, with
     // the semi-implicit Euler bias g T dt / 2 as tolerance (see the force-driven test)
     const PhysicsScene scene = flatScene();
-    PhysicsWorld world(scene);
+    PhysicsWorld world(shared(scene));
     BodyStates start = world.startStates();
     start[0].position.z() = 1.0;
     const double g = scene.contact.gravity;
@@ -148,7 +148,7 @@ TEST(PhysicsWorld, CubeOnTheFloorStaysAtRest)
     // a cube resting on the floor with nothing pushing it: no horizontal force acts, so it must not move;
     // it may settle into the floor by the contact layer (about a millimetre)
     const PhysicsScene scene = flatScene();
-    PhysicsWorld world(scene);
+    PhysicsWorld world(shared(scene));
     const BodyStates start = world.startStates();
     const BodyStates result = simulate(world, start, Eigen::Vector2d::Zero(), 0.01, 200);
     const BodyState &cube = result[1];
@@ -163,7 +163,7 @@ TEST(PhysicsWorld, CubesOfSceneOneStayAtRest)
 {
     // the same with the scene's parameters and its propagation sub-step (0.07 s / 7)
     const PhysicsScene scene = benchmarkScene(1);
-    PhysicsWorld world(scene);
+    PhysicsWorld world(shared(scene));
     const BodyStates start = world.startStates();
     const BodyStates result = simulate(world, start, Eigen::Vector2d::Zero(), 0.01, 200);
     for (std::size_t i = 1; i < result.size(); ++i)
@@ -179,7 +179,7 @@ TEST(PhysicsWorld, CubesOfSceneOneStayAtRest)
 TEST(PhysicsWorld, RestingRobotInSceneOneTouchesNothing)
 {
     const PhysicsScene scene = benchmarkScene(1);
-    PhysicsWorld world(scene);
+    PhysicsWorld world(shared(scene));
     world.setStates(world.startStates());
     const double depth = world.detectContacts();
     EXPECT_TRUE(world.touches().empty());
@@ -195,7 +195,7 @@ TEST(PhysicsWorld, RobotAgainstAWallTouchesIt)
     const std::size_t wall2 = scene.bodyIndex("wall2");
     const double face = -0.35;
     ASSERT_NEAR(distanceToStartFootprint(scene, wall2, Eigen::Vector2d(0.0, face)), 0.0, 1e-12);
-    PhysicsWorld world(scene);
+    PhysicsWorld world(shared(scene));
     BodyStates states = world.startStates();
     const double r = scene.robot.radius;
 
@@ -227,7 +227,7 @@ TEST(PhysicsWorld, TouchesListEveryBodyOnceInOrder)
 {
     // the robot squeezed into the corner between wall4 (y up to 0.55) and a cube moved beside it
     const PhysicsScene scene = benchmarkScene(1);
-    PhysicsWorld world(scene);
+    PhysicsWorld world(shared(scene));
     const std::size_t wall4 = scene.bodyIndex("wall4");
     const std::size_t cube1 = scene.bodyIndex("cube1");
     BodyStates states = world.startStates();
@@ -246,7 +246,7 @@ TEST(PhysicsWorld, TouchesListEveryBodyOnceInOrder)
 TEST(PhysicsWorld, SameStartAndForceGiveBitIdenticalStates)
 {
     const PhysicsScene scene = benchmarkScene(1);
-    PhysicsWorld world(scene);
+    PhysicsWorld world(shared(scene));
     const BodyStates start = world.startStates();
     const Eigen::Vector2d force(4.0, -3.0);
     const BodyStates first = simulate(world, start, force, 0.01, 40);
@@ -259,7 +259,7 @@ TEST(PhysicsWorld, PushingACubeIsBitIdenticalAfterResetRandomSeed)
     // the robot starts 2 mm west of cube1 and pushes it east: contacts between robot, cube and floor make
     // QuickStep draw from ODE's generator
     const PhysicsScene scene = benchmarkScene(1);
-    PhysicsWorld world(scene);
+    PhysicsWorld world(shared(scene));
     const std::size_t cube1 = scene.bodyIndex("cube1");
     ASSERT_EQ(world.sceneBodyOf(1), cube1);
     BodyStates start = world.startStates();
@@ -288,7 +288,7 @@ TEST(PhysicsWorld, PushingACubeIsBitIdenticalAfterResetRandomSeed)
     const BodyStates second = simulate(world, start, force, 0.01, 60);
     EXPECT_TRUE(sameBits(first, second));
     // and in a second world built from the same scene
-    PhysicsWorld other(scene);
+    PhysicsWorld other(shared(scene));
     const BodyStates third = simulate(other, start, force, 0.01, 60);
     EXPECT_TRUE(sameBits(first, third));
 }
@@ -299,5 +299,5 @@ TEST(PhysicsWorld, MovablePrismIsRejected)
     PhysicsBody &wedge = scene.bodies[scene.bodyIndex("wedge")];
     wedge.kind = BodyKind::Free;
     wedge.mass = 1.0;
-    EXPECT_THROW(PhysicsWorld world(scene), ompl::Exception);
+    EXPECT_THROW(PhysicsWorld world(shared(scene)), ompl::Exception);
 }
