@@ -31,10 +31,15 @@ namespace ompl_mm
     class ManipulationMetric
     {
     public:
-        /** Weights of the metric; defaults are the paper's values for arms. */
+        /** Weights of the metric; defaults are the paper's values for arms. The robot term is
+            robotWeight * (jointWeight * joint distance + toolWeight * tool distance +
+            rotationWeight * (1 - |q_a . q_b|) of the tool rotations). */
         struct Weights
         {
-            double robotWeight{1.0};          ///< factor on the robot term (arms only)
+            double robotWeight{1.0};          ///< factor on the whole robot term
+            double jointWeight{0.5};          ///< on the joint-space distance (metres or radians)
+            double toolWeight{1.0};           ///< on the tool point's distance, per metre
+            double rotationWeight{2.0};       ///< on the tool's rotation distance (0 to 1)
             double movingObjectPenalty{0.1};  ///< added per object that moves, metres
             double moveToObjectPenalty{0.3};  ///< added when the tool must travel to an object, metres
             double moveToObjectFactor{1.0};   ///< factor on that travel distance
@@ -44,7 +49,13 @@ namespace ompl_mm
         /** Most objects the metric handles (it keeps sets of objects as bits). */
         static constexpr unsigned int MAX_OBJECTS = 64;
 
-        /** @throws ompl::Exception when the space has more than MAX_OBJECTS objects. */
+        /** Weights for a robot: the paper's for arms; for a robot whose moving joints are all
+            prismatic the joints are the tool's position, so its robot term is the joint distance
+            alone (jointWeight 1, toolWeight and rotationWeight 0), as in the paper's mobile scene. */
+        static Weights defaultWeights(const RobotModel &robot);
+
+        /** Starts with defaultWeights() of the space's robot.
+            @throws ompl::Exception when the space has more than MAX_OBJECTS objects. */
         explicit ManipulationMetric(const ManipulationStateSpace *space);
 
         Weights &weights() { return weights_; }
@@ -85,11 +96,12 @@ namespace ompl_mm
         {
             if (!query.robotDefined)
                 return 0.0;
-            return mobile_ ? jointDistance : weights_.robotWeight * (0.5 * jointDistance + toolDistance);
+            return weights_.robotWeight *
+                   (weights_.jointWeight * jointDistance + weights_.toolWeight * toolDistance);
         }
-        /** False when robotLowerBound() ignores the tool distance (mobile bases), so callers may
+        /** False when robotLowerBound() ignores the tool distance (toolWeight 0), so callers may
             skip computing it. */
-        bool boundUsesToolDistance() const { return !mobile_; }
+        bool boundUsesToolDistance() const { return weights_.toolWeight != 0.0; }
 
         /** A lower bound of the tool's legs (first approach and final return) for vertices with
             the same objects whose tool points lie in toolBox and whose squared tool distance to
@@ -160,6 +172,5 @@ namespace ompl_mm
 
         const ManipulationStateSpace *space_;
         Weights weights_;
-        bool mobile_;
     };
 }  // namespace ompl_mm

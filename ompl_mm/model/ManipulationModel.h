@@ -31,31 +31,15 @@ namespace ompl_mm
         unsigned int objectCount() const { return static_cast<unsigned int>(scene_.objects.size()); }
         int toolLink() const { return toolLink_; }
 
-        /** True when every moving joint is prismatic (a mobile base): the robot's metric term is
-            then plain joint distance and pushes place the base directly, without IK. */
-        bool isMobileBase() const { return mobileBase_; }
-
         /** World frame of the tool point for joint values q. */
         Eigen::Isometry3d toolFrame(const double *q) const;
 
         /** The surface an object at this pose rests on, or -1 when it rests on none (it is held). */
         int restingSurface(const Eigen::Vector3d &position) const;
 
-        /** True when the robot can be placed by setting joints directly in x and y (two prismatic
-            joints along world x and y); then baseJointsFor() is exact. */
-        bool hasPlanarBase() const { return planarBase_; }
-
-        /** Joint values that put the tool point at world (x, y), other joints as in q.
-            @pre hasPlanarBase(). */
-        void baseJointsFor(const Eigen::Vector2d &toolXY, double *q) const;
-
     private:
         Scene scene_;
         RobotModel robot_;
         int toolLink_{-1};
-        bool mobileBase_{false};
-        bool planarBase_{false};
-        int baseJointX_{-1};
-        int baseJointY_{-1};
     };
 }  // namespace ompl_mm

@@ -4,6 +4,7 @@
    kinematics is needed because the base joints place the tool directly. */
 #pragma once
 
+#include "ompl_mm/primitives/PlanarBase.h"
 #include "ompl_mm/primitives/Primitive.h"
 
 namespace ompl_mm
@@ -29,6 +30,7 @@ namespace ompl_mm
         /** True when the object slides on its surface between a and b (moves in x, y only). */
         bool slides(const ompl::base::State *a, const ompl::base::State *b, unsigned int object) const;
 
+        PlanarBase base_;
         double standoff_;
     };
 }  // namespace ompl_mm

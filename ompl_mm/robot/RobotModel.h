@@ -71,6 +71,9 @@ namespace ompl_mm
         /** The moving joint with variable index i. */
         const Joint &variableJoint(unsigned int i) const { return joints_[variableJoints_[i]]; }
 
+        /** True when every moving joint is prismatic (false for a robot without moving joints). */
+        bool allJointsPrismatic() const;
+
         /** Index of the link called name. @throws ompl::Exception when there is none. */
         int linkIndex(const std::string &name) const;
 

@@ -216,7 +216,8 @@ namespace ompl_mm
                                                 const ompl::base::State *state)
         {
             const ManipulationModel &model = *space.model();
-            if (!model.isMobileBase())
+            // a robot whose joints are all prismatic is drawn as the round shape of its tool link
+            if (!model.robot().allJointsPrismatic())
                 return std::nullopt;
             for (const LinkShape &linkShape : model.robot().links()[model.toolLink()].shapes)
             {
@@ -247,7 +248,7 @@ namespace ompl_mm
             const bool complete = joints.size() == space.robotDimension() &&
                                   std::all_of(joints.begin(), joints.end(),
                                               [](const GoalCoordinate &j) { return j.has_value(); });
-            if (!space.model()->isMobileBase() || !complete)
+            if (!space.model()->robot().allJointsPrismatic() || !complete)
                 return;
             ompl::base::ScopedState<> goal(setup.getStateSpace());
             space.copyState(goal.get(), start);

@@ -17,28 +17,6 @@ namespace ompl_mm
         {
             throw ompl_core::InputError(scene_.robot.where, e.what());
         }
-
-        mobileBase_ = robot_.dof() > 0;
-        for (unsigned int i = 0; i < robot_.dof(); ++i)
-            mobileBase_ = mobileBase_ && robot_.variableJoint(i).type == Joint::Type::Prismatic;
-
-        // a planar base: prismatic joints along world x and y on the way to the tool
-        std::vector<double> zero(robot_.dof(), 0.0);
-        const auto &links = robot_.links();
-        for (int link = toolLink_; link > 0; link = links[link].parent)
-        {
-            const Joint &joint = robot_.joints()[links[link].joint];
-            if (joint.type != Joint::Type::Prismatic)
-                continue;
-            const Eigen::Isometry3d parent =
-                robot_.linkFrame(zero.data(), scene_.robot.basePose, links[link].parent);
-            const Eigen::Vector3d axis = parent.linear() * joint.origin.linear() * joint.axis;
-            if (axis.isApprox(Eigen::Vector3d::UnitX(), 1e-9))
-                baseJointX_ = joint.variable;
-            else if (axis.isApprox(Eigen::Vector3d::UnitY(), 1e-9))
-                baseJointY_ = joint.variable;
-        }
-        planarBase_ = baseJointX_ >= 0 && baseJointY_ >= 0;
     }
 
     Eigen::Isometry3d ManipulationModel::toolFrame(const double *q) const
@@ -57,14 +35,5 @@ namespace ompl_mm
                 return static_cast<int>(i);
         }
         return -1;
-    }
-
-    void ManipulationModel::baseJointsFor(const Eigen::Vector2d &toolXY, double *q) const
-    {
-        q[baseJointX_] = 0.0;
-        q[baseJointY_] = 0.0;
-        const Eigen::Vector3d atZero = toolFrame(q).translation();
-        q[baseJointX_] = toolXY.x() - atZero.x();
-        q[baseJointY_] = toolXY.y() - atZero.y();
     }
 }  // namespace ompl_mm

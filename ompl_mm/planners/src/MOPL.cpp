@@ -83,6 +83,9 @@ namespace ompl_mm
             params()[name].setRangeSuggestion(range);
         };
         weight("robot_weight", &ManipulationMetric::Weights::robotWeight, "0.:0.1:100.");
+        weight("joint_weight", &ManipulationMetric::Weights::jointWeight, "0.:0.1:100.");
+        weight("tool_weight", &ManipulationMetric::Weights::toolWeight, "0.:0.1:100.");
+        weight("rotation_weight", &ManipulationMetric::Weights::rotationWeight, "0.:0.1:100.");
         weight("moving_object_penalty", &ManipulationMetric::Weights::movingObjectPenalty, "0.:0.1:100.");
         weight("move_to_object_penalty", &ManipulationMetric::Weights::moveToObjectPenalty, "0.:0.1:100.");
         weight("move_to_object_factor", &ManipulationMetric::Weights::moveToObjectFactor, "0.:0.1:100.");

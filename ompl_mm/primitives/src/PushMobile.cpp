@@ -13,9 +13,9 @@ namespace ompl_mm
     }
 
     PushMobile::PushMobile(const ManipulationStateSpace *space, double standoff)
-        : Primitive(space, "push_mobile", PrimitiveKind::Push), standoff_(standoff)
+        : Primitive(space, "push_mobile", PrimitiveKind::Push), base_(*space->model()), standoff_(standoff)
     {
-        if (!space->model()->hasPlanarBase())
+        if (!base_.exists())
             throw ompl::Exception(
                 "push_mobile needs a robot whose base moves along world x and y "
                 "(two prismatic joints)");
@@ -66,12 +66,10 @@ namespace ompl_mm
 
         // transit behind the object, then push it to its target
         ompl::base::State *waypoint = space_->cloneState(from);
-        space_->model()->baseJointsFor(start.position.head<2>() - standoff_ * direction,
-                                       space_->robotValues(waypoint));
+        base_.placeTool(start.position.head<2>() - standoff_ * direction, space_->robotValues(waypoint));
         if (space_->robotMoves(from, waypoint))
             trajectory.append(waypoint, {PrimitiveKind::Transit, -1});
-        space_->model()->baseJointsFor(target.position.head<2>() - standoff_ * direction,
-                                       space_->robotValues(waypoint));
+        base_.placeTool(target.position.head<2>() - standoff_ * direction, space_->robotValues(waypoint));
         space_->setObjectPose(waypoint, object, target);
         trajectory.append(waypoint, {PrimitiveKind::Push, object});
         space_->freeState(waypoint);

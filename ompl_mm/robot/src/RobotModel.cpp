@@ -331,4 +331,12 @@ namespace ompl_mm
             frame = jointTransform(joints_[links_[i].joint], q) * frame;
         return base * frame;
     }
+
+    bool RobotModel::allJointsPrismatic() const
+    {
+        for (unsigned int i = 0; i < dof(); ++i)
+            if (variableJoint(i).type != Joint::Type::Prismatic)
+                return false;
+        return dof() > 0;
+    }
 }  // namespace ompl_mm

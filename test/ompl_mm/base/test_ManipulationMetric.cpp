@@ -207,3 +207,27 @@ TEST_F(MobileMetric, ObjectCostBoundsTheDistance)
     }
     space_.freeState(vertexState);
 }
+
+TEST(ManipulationMetricWeights, DefaultsFollowTheRobotsJoints)
+{
+    const ManipulationMetric::Weights arm =
+        ManipulationMetric::defaultWeights(makeModel(unitArmScene())->robot());
+    EXPECT_EQ(arm.jointWeight, 0.5);
+    EXPECT_EQ(arm.toolWeight, 1.0);
+    EXPECT_EQ(arm.rotationWeight, 2.0);
+    const ManipulationMetric::Weights base =
+        ManipulationMetric::defaultWeights(makeModel(mobileBlockedScene())->robot());
+    EXPECT_EQ(base.jointWeight, 1.0);
+    EXPECT_EQ(base.toolWeight, 0.0);
+    EXPECT_EQ(base.rotationWeight, 0.0);
+}
+
+TEST_F(MobileMetric, ToolWeightAddsTheToolDistanceToTheRobotTerm)
+{
+    robot(to_, V2(0.4, -0.2));
+    const double joints = std::hypot(1.9 - 0.4, 1.9 + 0.2);
+    metric_.weights().toolWeight = 0.5;
+    metric_.weights().robotWeight = 2.0;
+    // the tool moves with the base: its distance equals the joint distance
+    EXPECT_NEAR(distance(from_, to_), 2.0 * (joints + 0.5 * joints), 1e-12);
+}
