@@ -22,7 +22,7 @@ namespace
 {
     struct Options
     {
-        ompl_mm::apps::CommonOptions common{"mopl"};
+        apps::CommonOptions common{"mopl"};
         std::string path;  ///< path file, empty for none
     };
 
@@ -30,7 +30,7 @@ namespace
     {
         po::options_description extra;
         extra.add_options()("path", po::value(&options.path), "write the path's waypoints to this text file");
-        if (!ompl_mm::apps::parseCommandLine(
+        if (!apps::parseCommandLine(
                 argc, argv,
                 "Usage: ompl_mm_plan SCENE.xml [options]\n"
                 "Plans a multi-modal manipulation task (transit, push, ...) with MOPL.\n",
@@ -85,9 +85,9 @@ namespace
         if (const std::shared_ptr<ompl_mm::MOPL> mopl = setup.mopl())
             mopl->setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         // open the outputs first: a bad path should not cost a whole planning run
-        std::ofstream json = ompl_mm::apps::openOutput(options.common.json);
-        std::ofstream svg = ompl_mm::apps::openOutput(options.common.svg);
-        std::ofstream path = ompl_mm::apps::openOutput(options.path);
+        std::ofstream json = apps::openOutput(options.common.json);
+        std::ofstream svg = apps::openOutput(options.common.svg);
+        std::ofstream path = apps::openOutput(options.path);
 
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
         setup.solve(timeLimit);
@@ -109,7 +109,7 @@ namespace
 
 int main(int argc, char **argv)
 {
-    return ompl_mm::apps::runApp<Options>(
+    return apps::runApp<Options>(
         "ompl_mm_plan",
         [&](Options &options, int &exitCode) { return parseOptions(argc, argv, options, exitCode); }, run);
 }

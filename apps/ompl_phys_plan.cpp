@@ -22,13 +22,13 @@ namespace
 {
     struct Options
     {
-        ompl_mm::apps::CommonOptions common{"kpiece"};
+        apps::CommonOptions common{"kpiece"};
     };
 
     bool parseOptions(int argc, char **argv, Options &options, int &exitCode)
     {
         po::options_description none;
-        if (!ompl_mm::apps::parseCommandLine(
+        if (!apps::parseCommandLine(
                 argc, argv,
                 "Usage: ompl_phys_plan SCENE.xml [options]\n"
                 "Plans a physics-based pushing task: a sphere robot driven by a planar force in an ODE\n"
@@ -76,8 +76,8 @@ namespace
         setup.setPlannerByName(options.common.planner);
         ompl_core::applyParameters(*setup.getPlanner(), options.common.parameterSettings());
         // open the outputs first: a bad path should not cost a whole planning run
-        std::ofstream json = ompl_mm::apps::openOutput(options.common.json);
-        std::ofstream svg = ompl_mm::apps::openOutput(options.common.svg);
+        std::ofstream json = apps::openOutput(options.common.json);
+        std::ofstream svg = apps::openOutput(options.common.svg);
 
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
         setup.solve(timeLimit);
@@ -105,7 +105,7 @@ namespace
 
 int main(int argc, char **argv)
 {
-    return ompl_mm::apps::runApp<Options>(
+    return apps::runApp<Options>(
         "ompl_phys_plan",
         [&](Options &options, int &exitCode) { return parseOptions(argc, argv, options, exitCode); }, run);
 }

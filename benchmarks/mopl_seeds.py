@@ -8,11 +8,11 @@ Example:
 """
 import argparse
 import json
-import os
 import statistics
-import subprocess
 import sys
 import tempfile
+
+from run_records import check_binary, run_app
 
 # MOPL paper, Table I (200 runs, 3.1 GHz desktop, 2015): mean values.
 PAPER = {
@@ -20,18 +20,6 @@ PAPER = {
                        "nn_share": 83.0, "iterations": 4132, "path_vertices": 63.7, "length_m": 17.389,
                        "transit": 6.462, "push": 5.462, "transfer": 0.0},
 }
-
-
-def run(binary, scene, seed, time_limit, workdir):
-    out = os.path.join(workdir, f"seed{seed}.json")
-    args = [binary, scene, "--seed", str(seed), "--json", out]
-    if time_limit:
-        args += ["--time-limit", str(time_limit)]
-    status = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    if status.returncode == 2:
-        sys.exit(f"ompl_mm_plan rejected the input: {status.stderr.strip()}")
-    with open(out) as f:
-        return json.load(f)
 
 
 def summary(values):
@@ -87,13 +75,13 @@ def main():
     args = parser.parse_args()
     if args.seeds < 1:
         sys.exit("--seeds must be at least 1")
-    if not os.access(args.binary, os.X_OK):
-        sys.exit(f"{args.binary}: not an executable (build first: scripts/build.sh)")
+    check_binary(args.binary)
 
     with tempfile.TemporaryDirectory() as workdir:
         results = []
         for seed in range(args.first_seed, args.first_seed + args.seeds):
-            results.append(run(args.binary, args.scene, seed, args.time_limit, workdir))
+            limit = ["--time-limit", str(args.time_limit)] if args.time_limit else []
+            results.append(run_app(args.binary, args.scene, seed, workdir, limit))
             print(f"seed {seed}: {'solved' if results[-1]['solved'] else 'NOT solved'} in {results[-1]['time_s']:.3f} s",
                   file=sys.stderr)
     name = results[0]["scene"]

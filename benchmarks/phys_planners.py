@@ -11,24 +11,14 @@ Example (the protocol of docs/benchmarks.md):
 import argparse
 import concurrent.futures
 import json
-import os
 import statistics
-import subprocess
 import sys
 import tempfile
 
+from run_records import check_binary, run_app
+
 PLANNERS = ["kpiece", "rrt", "sycloprrt", "est", "syclopest"]
 SCENES = ["scenes/physics/scene1.xml", "scenes/physics/scene2.xml", "scenes/physics/scene3.xml"]
-
-
-def run(binary, scene, planner, seed, time_limit, workdir):
-    out = os.path.join(workdir, f"{os.path.basename(scene)}-{planner}-{seed}.json")
-    args = [binary, scene, "--planner", planner, "--seed", str(seed), "--json", out, "--time-limit", str(time_limit)]
-    status = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    if status.returncode == 2:
-        sys.exit(f"ompl_phys_plan rejected the input: {status.stderr.strip()}")
-    with open(out) as f:
-        return json.load(f)
 
 
 def median(values):
@@ -67,15 +57,15 @@ def main():
     args = parser.parse_args()
     if args.seeds < 1 or args.jobs < 1 or not args.time_limit > 0:
         sys.exit("--seeds and --jobs must be at least 1, --time-limit positive")
-    if not os.access(args.binary, os.X_OK):
-        sys.exit(f"{args.binary}: not an executable (build first: scripts/build.sh)")
+    check_binary(args.binary)
 
     jobs = [(scene, planner, seed) for scene in args.scenes for planner in args.planners
             for seed in range(args.first_seed, args.first_seed + args.seeds)]
     results = []
     with tempfile.TemporaryDirectory() as workdir, \
             concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        futures = {pool.submit(run, args.binary, scene, planner, seed, args.time_limit, workdir): (scene, planner, seed)
+        futures = {pool.submit(run_app, args.binary, scene, seed, workdir,
+                               ["--planner", planner, "--time-limit", str(args.time_limit)]): (scene, planner, seed)
                    for scene, planner, seed in jobs}
         for future in concurrent.futures.as_completed(futures):
             r = future.result()

@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-namespace ompl_mm::apps
+namespace apps
 {
     /** The options every planning app has. */
     struct CommonOptions
@@ -139,4 +139,4 @@ namespace ompl_mm::apps
         }
         return 2;
     }
-}  // namespace ompl_mm::apps
+}  // namespace apps

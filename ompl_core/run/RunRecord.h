@@ -3,6 +3,9 @@
    logs take their run properties from it. */
 #pragma once
 
+#include <ompl/base/PlannerStatus.h>
+#include <ompl/base/ProblemDefinition.h>
+
 #include <cstdint>
 #include <ostream>
 #include <string>
@@ -63,6 +66,11 @@ namespace ompl_core
         double time{0.0};         ///< planning time, seconds
         RunRecord details;        ///< the library's own values (statistics, path, metrics), in output order
     };
+
+    /** The result every planner shares, without details: whether pdef holds an exact or only an
+        approximate solution, the planner's status and its planning time (seconds). */
+    RunResult runResult(const RunDescription &run, const ompl::base::ProblemDefinition &pdef,
+                        const ompl::base::PlannerStatus &status, double time);
 
     /** Writes result as one JSON object: scene, planner, seed, time_limit_s, solved, approximate,
         status, time_s, then the details. Non-finite numbers are written as null. */

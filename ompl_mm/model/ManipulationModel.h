@@ -1,6 +1,7 @@
 /* What the planning pieces share about a problem: the robot's kinematics placed in the world,
    the tool point, the movable objects and the surfaces they rest on. It answers the questions
-   every piece asks of a configuration: where is the tool, does this object rest, and on what. */
+   every piece asks of a configuration: where is the tool. Whether an object rests, and on what,
+   is the scene's rule (Scene::restingSurface). */
 #pragma once
 
 #include "ompl_mm/robot/RobotModel.h"
@@ -19,9 +20,6 @@ namespace ompl_mm
     class ManipulationModel
     {
     public:
-        /** Height within which an object counts as resting on a surface, metres. */
-        static constexpr double REST_TOLERANCE = 1e-4;
-
         /** @throws ompl_core::InputError (naming the scene's <robot> line) when the tool link is unknown. */
         ManipulationModel(Scene scene, RobotModel robot);
 
@@ -33,9 +31,6 @@ namespace ompl_mm
 
         /** World frame of the tool point for joint values q. */
         Eigen::Isometry3d toolFrame(const double *q) const;
-
-        /** The surface an object at this pose rests on, or -1 when it rests on none (it is held). */
-        int restingSurface(const Eigen::Vector3d &position) const;
 
     private:
         Scene scene_;

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -53,9 +54,19 @@ namespace ompl_mm
         std::string obstacle;  ///< obstacle whose top this is (resting objects may touch it); may be empty
         ompl_core::SourceLocation where;
 
+        /** An object rests on the surface when its base height differs from the surface's by less
+            than this, metres (the tolerance of the original MOPL implementation). */
+        static constexpr double REST_TOLERANCE = 1e-4;
+
         bool contains(double x, double y) const
         {
             return x >= min.x() && x <= max.x() && y >= min.y() && y <= max.y();
+        }
+
+        /** True when an object whose base centre is at `base` rests on this surface. */
+        bool supports(const Eigen::Vector3d &base) const
+        {
+            return std::abs(base.z() - height) < REST_TOLERANCE && contains(base.x(), base.y());
         }
     };
 
@@ -145,5 +156,9 @@ namespace ompl_mm
 
         /** Index of the object called name, or -1. */
         int objectIndex(const std::string &name) const;
+
+        /** Index of the first surface that supports an object whose base centre is at `base`, or -1
+            when none does (the object is held). */
+        int restingSurface(const Eigen::Vector3d &base) const;
     };
 }  // namespace ompl_mm

@@ -83,6 +83,16 @@ expect_bad() {
     fi
 }
 
+# expect_bad_edit NAME COPY OLD NEW LOCATE TEXT ARGS...: the base scene, copied to COPY.xml with OLD
+# replaced by NEW, makes the app exit 2 naming the line of the first text LOCATE and mentioning TEXT
+expect_bad_edit() {
+    local name=$1 copy=$2 old=$3 new=$4 locate=$5 text=$6 file
+    shift 6
+    file=$(make_scene "$copy")
+    edit "$file" "$old" "$new"
+    expect_bad "$name" "$file" "$(line_of "$file" "$locate")" "$text" "$@"
+}
+
 # expect_bad_option NAME TEXT ARGS...: a bad command line exits 2 with TEXT on stderr
 expect_bad_option() {
     local name=$1 text=$2
@@ -94,6 +104,26 @@ expect_bad_option() {
         not_ok "bad input: $name" "command: $plan $*" "stderr does not mention '$text'" "$(outputs)"
     else
         ok "bad input: $name"
+    fi
+}
+
+# check_help_and_usage WORDS...: --help exits 0 and names every word; no scene argument exits 2
+check_help_and_usage() {
+    run help --help
+    local missing="" word
+    for word in "$@"; do
+        grep -q -w -F -- "$word" "$out" || missing="$missing $word"
+    done
+    if [ $status -eq 0 ] && [ -z "$missing" ]; then
+        ok "--help exits 0 and lists the options and planners"
+    else
+        not_ok "--help exits 0 and lists the options and planners" "exit $status; not mentioned:$missing" "$(outputs)"
+    fi
+    run noscene
+    if [ $status -eq 2 ]; then
+        ok "no scene argument: exit 2"
+    else
+        not_ok "no scene argument: exit 2" "expected exit 2, got $status" "$(outputs)"
     fi
 }
 

@@ -98,23 +98,7 @@ else
 fi
 
 # --- 3. help and usage -----------------------------------------------------------------------------
-run help --help
-missing=""
-for option in --seed --time-limit --json --svg --path; do
-    grep -q -F -- "$option" "$out" || missing="$missing $option"
-done
-if [ $status -eq 0 ] && [ -z "$missing" ]; then
-    ok "--help exits 0 and lists the options"
-else
-    not_ok "--help exits 0 and lists the options" "exit $status; options not mentioned:$missing" "$(outputs)"
-fi
-
-run noscene
-if [ $status -eq 2 ]; then
-    ok "no scene argument: exit 2"
-else
-    not_ok "no scene argument: exit 2" "expected exit 2, got $status" "$(outputs)"
-fi
+check_help_and_usage --planner --seed --time-limit --param --json --svg --path mopl
 
 # --- 4. not solved -----------------------------------------------------------------------------------
 walled=$(make_scene walled_goal)
@@ -132,51 +116,54 @@ fi
 # --- 5. bad input ------------------------------------------------------------------------------------
 expect_bad "missing scene file" "$scratch/scenes/no_such_scene.xml" - "not found"
 
-f=$(make_scene malformed_xml)
-edit "$f" '<origin xyz="-1 0 0.5"/>' '<origin xyz="-1 0 0.5">'
-expect_bad "malformed XML" "$f" "$(line_of "$f" '<origin xyz="-1 0 0.5">')" "XML"
+expect_bad_edit "malformed XML" malformed_xml '<origin xyz="-1 0 0.5"/>' '<origin xyz="-1 0 0.5">' \
+    '<origin xyz="-1 0 0.5">' "XML"
 
-f=$(make_scene unknown_element)
-edit "$f" '  <surface name="floor"' '  <colour value="red"/>\n  <surface name="floor"'
-expect_bad "unknown element" "$f" "$(line_of "$f" '<colour')" "colour"
+expect_bad_edit "unknown element" unknown_element '  <surface name="floor"' '  <colour value="red"/>\n  <surface name="floor"' \
+    '<colour' "colour"
 
-f=$(make_scene unknown_attribute)
-edit "$f" 'max="2.5 2.5"/>' 'max="2.5 2.5" colour="red"/>'
-expect_bad "unknown attribute" "$f" "$(line_of "$f" 'colour="red"')" "colour"
+expect_bad_edit "unknown attribute" unknown_attribute 'max="2.5 2.5"/>' 'max="2.5 2.5" colour="red"/>' \
+    'colour="red"' "colour"
 
-f=$(make_scene malformed_number)
-edit "$f" '<origin xyz="-1 0 0.5"/>' '<origin xyz="-1 0 0.5abc"/>'
-expect_bad "malformed number" "$f" "$(line_of "$f" '0.5abc')" "0.5abc"
+expect_bad_edit "malformed number" malformed_number '<origin xyz="-1 0 0.5"/>' '<origin xyz="-1 0 0.5abc"/>' \
+    '0.5abc' "0.5abc"
 
-f=$(make_scene missing_urdf)
-edit "$f" 'urdf="robots/mobile_disc.urdf"' 'urdf="robots/no_such_robot.urdf"'
-expect_bad "missing URDF file" "$f" "$(line_of "$f" 'no_such_robot.urdf')" "no_such_robot.urdf"
+expect_bad_edit "missing URDF file" missing_urdf 'urdf="robots/mobile_disc.urdf"' 'urdf="robots/no_such_robot.urdf"' \
+    'no_such_robot.urdf' "no_such_robot.urdf"
 
-f=$(make_scene start_in_collision)
-edit "$f" '<robot joints="1.9 1.9"/>' '<robot joints="-1 0"/>'
-expect_bad "start in collision" "$f" "$(line_of "$f" '<robot joints="-1 0"/>')" "block1"
+expect_bad_edit "start in collision" start_in_collision '<robot joints="1.9 1.9"/>' '<robot joints="-1 0"/>' \
+    '<robot joints="-1 0"/>' "block1"
 
-f=$(make_scene unknown_primitive)
-edit "$f" '<push_mobile standoff="0.41"/>' '<push_flying standoff="0.41"/>'
-expect_bad "unknown primitive type" "$f" "$(line_of "$f" 'push_flying')" "push_flying"
+expect_bad_edit "unknown primitive type" unknown_primitive '<push_mobile standoff="0.41"/>' '<push_flying standoff="0.41"/>' \
+    'push_flying' "push_flying"
 
-f=$(make_scene unknown_planner_parameter)
-edit "$f" 'name="vertex_step"' 'name="vertex_stride"'
-expect_bad "unknown planner parameter" "$f" "$(line_of "$f" 'vertex_stride')" "vertex_stride"
+expect_bad_edit "unknown planner parameter" unknown_planner_parameter 'name="vertex_step"' 'name="vertex_stride"' \
+    'vertex_stride' "vertex_stride"
 
-f=$(make_scene planner_parameter_out_of_range)
-edit "$f" 'name="connect_step" value="0.05"' 'name="connect_step" value="-1"'
-expect_bad "out-of-range planner parameter" "$f" "$(line_of "$f" 'name="connect_step"')" "connect_step"
+expect_bad_edit "out-of-range planner parameter" planner_parameter_out_of_range 'name="connect_step" value="0.05"' 'name="connect_step" value="-1"' \
+    'name="connect_step"' "connect_step"
 
-f=$(make_scene goal_off_surface)
-edit "$f" '<object name="obj3" xyz="-0.9 -0.9 *"' '<object name="obj3" xyz="3 3 *"'
-expect_bad "goal on no support surface" "$f" "$(line_of "$f" 'xyz="3 3 *"')" "obj3"
+expect_bad_edit "goal on no support surface" goal_off_surface '<object name="obj3" xyz="-0.9 -0.9 *"' '<object name="obj3" xyz="3 3 *"' \
+    'xyz="3 3 *"' "obj3"
 
 expect_bad_option "--seed 0" "--seed" "$scene" --seed 0
 expect_bad_option "--seed -1" "--seed" "$scene" --seed -1
 expect_bad_option "--seed 2^32" "--seed" "$scene" --seed 4294967296
 expect_bad_option "--time-limit -1" "--time-limit" "$scene" --time-limit -1
 expect_bad_option "--planner foo" "foo" "$scene" --planner foo
+restarts_json=$scratch/restarts.json
+run param_restarts "$scene" --seed 1 --time-limit 20 --param restart_iterations=50 --json "$restarts_json"
+if python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if d["stats"]["restarts"] >= 1 else 1)' \
+    "$restarts_json" 2>/dev/null; then
+    ok "--param restart_iterations=50 reaches MOPL: the run restarts"
+else
+    not_ok "--param restart_iterations=50 reaches MOPL: the run restarts" "json: $(head -c 600 "$restarts_json")" "$(outputs)"
+fi
+
+expect_bad_option "--param with an unknown name" "command line option --param: unknown parameter 'no_such' of planner MOPL" \
+    "$scene" --param no_such=1
+expect_bad_option "--param with a bad value" "bad value 'abc' for parameter 'connect_step'" "$scene" --param connect_step=abc
+expect_bad_option "--param without NAME=" "expected NAME=VALUE" "$scene" --param connect_step
 expect_bad_option "unwritable --json path" "/nonexistent/dir/x.json" "$scene" --time-limit 1 --json /nonexistent/dir/x.json
 
 echo "$passed passed, $failed failed"

@@ -24,23 +24,7 @@ cd "$scratch" || exit 2
 scene=$scenes/$base
 
 # --- 1. help and usage -----------------------------------------------------------------------------
-run help --help
-missing=""
-for word in --planner --seed --time-limit --json --svg rrt est kpiece sycloprrt syclopest; do
-    grep -q -w -F -- "$word" "$out" || missing="$missing $word"
-done
-if [ $status -eq 0 ] && [ -z "$missing" ]; then
-    ok "--help exits 0 and lists the options and planners"
-else
-    not_ok "--help exits 0 and lists the options and planners" "exit $status; not mentioned:$missing" "$(outputs)"
-fi
-
-run noscene
-if [ $status -eq 2 ]; then
-    ok "no scene argument: exit 2"
-else
-    not_ok "no scene argument: exit 2" "expected exit 2, got $status" "$(outputs)"
-fi
+check_help_and_usage --planner --seed --time-limit --param --json --svg rrt est kpiece sycloprrt syclopest pdst sst
 
 # --- 2. a solved run and its outputs ------------------------------------------------------------
 json1=$scratch/solved1.json
@@ -112,24 +96,24 @@ fi
 # --- 5. bad input ------------------------------------------------------------------------------------
 expect_bad "missing scene file" "$scratch/scenes/no_such_scene.xml" - "not found"
 
-f=$(make_scene malformed_xml)
-edit "$f" '<goal xy="0.92 -1.0" radius="0.05"/>' '<goal xy="0.92 -1.0" radius="0.05">'
 # the unclosed element's line
-expect_bad "malformed XML" "$f" "$(line_of "$f" '<goal xy=')" "XML"
+expect_bad_edit "malformed XML" malformed_xml '<goal xy="0.92 -1.0" radius="0.05"/>' '<goal xy="0.92 -1.0" radius="0.05">' \
+    '<goal xy=' "XML"
 
-f=$(make_scene unknown_element)
-edit "$f" '  <floor size="2.98 2.98"/>' '  <carpet colour="red"/>\n  <floor size="2.98 2.98"/>'
-expect_bad "unknown element" "$f" "$(line_of "$f" '<carpet')" "carpet"
+expect_bad_edit "unknown element" unknown_element '  <floor size="2.98 2.98"/>' '  <carpet colour="red"/>\n  <floor size="2.98 2.98"/>' \
+    '<carpet' "carpet"
 
-f=$(make_scene out_of_range)
-edit "$f" 'erp="0.5"' 'erp="2"'
-expect_bad "out-of-range parameter" "$f" "$(line_of "$f" 'erp="2"')" "erp"
+expect_bad_edit "out-of-range parameter" out_of_range 'erp="0.5"' 'erp="2"' \
+    'erp="2"' "erp"
 
-f=$(make_scene start_in_wall)
-edit "$f" 'start="-0.84 0.97"' 'start="0 0.5"'
-expect_bad "start inside a fixed wall" "$f" "$(line_of "$f" 'name="wall4"')" "starts touching 'wall4'"
+expect_bad_edit "start inside a fixed wall" start_in_wall 'start="-0.84 0.97"' 'start="0 0.5"' \
+    'name="wall4"' "starts touching 'wall4'"
 
 expect_bad_option "--planner foo" "foo" "$scene" --planner foo
+expect_bad_option "--param with an unknown name" "command line option --param: unknown parameter 'no_such' of planner RRT" \
+    "$scene" --planner rrt --param no_such=1
+expect_bad_option "--param with a bad value" "bad value 'abc' for parameter 'goal_bias'" "$scene" --planner rrt \
+    --param goal_bias=abc
 expect_bad_option "--seed 0" "--seed" "$scene" --seed 0
 expect_bad_option "--time-limit -1" "--time-limit" "$scene" --time-limit -1
 expect_bad_option "unwritable --json path" "/nonexistent/dir/x.json" "$scene" --time-limit 1 --json /nonexistent/dir/x.json

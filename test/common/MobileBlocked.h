@@ -2,7 +2,7 @@
 // capture.
 #pragma once
 
-#include "ompl_core/io/InputError.h"
+#include "common/InputErrors.h"
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
 
@@ -14,6 +14,10 @@
 
 namespace ompl_mm::test
 {
+    using ompl_core::test::contains;
+    using ompl_core::test::inputErrorOf;
+    using ompl_core::test::startsWith;
+
     /** The MOBILE BLOCKED scene, loaded from scenes/mobile_blocked.xml. */
     inline Scene mobileBlockedScene()
     {
@@ -72,37 +76,10 @@ namespace ompl_mm::test
         space.setObjectPose(state, object, {Eigen::Vector3d(x, y, z), yaw});
     }
 
-    /** The message of the ompl_core::InputError that f() throws, or "" when it throws none. */
-    template <typename F>
-    std::string inputErrorOf(F &&f)
-    {
-        try
-        {
-            f();
-        }
-        catch (const ompl_core::InputError &e)
-        {
-            return e.what();
-        }
-        return "";
-    }
-
     /** The ompl_core::InputError message of building a ManipulationSetup for scene, or "" when it builds. */
     inline std::string setupError(const Scene &scene)
     {
         return inputErrorOf([&] { ManipulationSetup setup(scene); });
-    }
-
-    /** True when text begins with prefix. */
-    inline bool startsWith(const std::string &text, const std::string &prefix)
-    {
-        return text.compare(0, prefix.size(), prefix) == 0;
-    }
-
-    /** True when text contains part. */
-    inline bool contains(const std::string &text, const std::string &part)
-    {
-        return text.find(part) != std::string::npos;
     }
 
     /** A fixture with a ManipulationSetup of a scene (MOBILE BLOCKED unless given) and its state space. */

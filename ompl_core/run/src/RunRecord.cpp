@@ -127,6 +127,18 @@ namespace ompl_core
         return nullptr;
     }
 
+    RunResult runResult(const RunDescription &run, const ompl::base::ProblemDefinition &pdef,
+                        const ompl::base::PlannerStatus &status, double time)
+    {
+        RunResult result;
+        result.run = run;
+        result.solved = pdef.hasExactSolution();
+        result.approximate = pdef.hasApproximateSolution();
+        result.status = status.asString();
+        result.time = time;
+        return result;
+    }
+
     void writeRunJson(std::ostream &out, const RunResult &result)
     {
         RunRecord header;

@@ -36,8 +36,8 @@ namespace ompl_mm
             std::vector<const SupportSurface *> surfaces;
             for (const SupportSurface &s : scene.surfaces)
                 if (fits(0, s.min.x(), s.max.x()) && fits(1, s.min.y(), s.max.y()) &&
-                    fits(2, s.height - ManipulationModel::REST_TOLERANCE,
-                         s.height + ManipulationModel::REST_TOLERANCE))
+                    fits(2, s.height - SupportSurface::REST_TOLERANCE,
+                         s.height + SupportSurface::REST_TOLERANCE))
                     surfaces.push_back(&s);
             return surfaces;
         }
@@ -103,7 +103,7 @@ namespace ompl_mm
             const ObjectPose pose = space_->objectPose(state, i);
             if (!pose.position.allFinite() || !std::isfinite(pose.yaw))
                 return std::numeric_limits<double>::infinity();
-            if (space_->model()->restingSurface(pose.position) < 0)
+            if (space_->model()->scene().restingSurface(pose.position) < 0)
                 unsupported += 1.0;
             const ObjectGoal *goal = objects_[i];
             if (!goal)
@@ -137,7 +137,7 @@ namespace ompl_mm
         const Scene &scene = space_->model()->scene();
         const ObjectGoal *goal = objects_[object];
         const std::vector<const SupportSurface *> candidates = surfacesFor(goal, scene);
-        if (fromSample && space_->model()->restingSurface(fromSample->position) >= 0)
+        if (fromSample && space_->model()->scene().restingSurface(fromSample->position) >= 0)
         {
             pose = *fromSample;
         }
@@ -158,7 +158,7 @@ namespace ompl_mm
                 pose.yaw = *goal->yaw;
         }
         // the goal's x, y may move the object off the sampled surface: rest it on one that fits
-        if (space_->model()->restingSurface(pose.position) < 0)
+        if (space_->model()->scene().restingSurface(pose.position) < 0)
             for (const SupportSurface *s : candidates)
                 if (s->contains(pose.position.x(), pose.position.y()))
                 {

@@ -155,7 +155,7 @@ namespace ompl_mm
 
     int ManipulationStateSpace::restingSurface(const ob::State *state, unsigned int object) const
     {
-        return model_->restingSurface(objectPosition(state, object));
+        return model_->scene().restingSurface(objectPosition(state, object));
     }
 
     Eigen::Vector3d ManipulationStateSpace::toolPosition(const ob::State *state) const

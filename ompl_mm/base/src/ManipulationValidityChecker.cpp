@@ -63,7 +63,7 @@ namespace ompl_mm
         for (unsigned int i = 0; i < space_->objectCount(); ++i)
         {
             poses_[i] = space_->objectPose(state, i);
-            resting_[i] = space_->model()->restingSurface(poses_[i].position);
+            resting_[i] = space_->model()->scene().restingSurface(poses_[i].position);
             if (resting_[i] >= 0)
                 continue;
             if (held >= 0)

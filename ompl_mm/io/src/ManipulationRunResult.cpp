@@ -26,14 +26,9 @@ namespace ompl_mm
     ompl_core::RunResult manipulationRunResult(const ompl_core::RunDescription &run,
                                                const ManipulationSetup &setup)
     {
-        const ompl::base::ProblemDefinitionPtr &pdef = setup.getProblemDefinition();
-        ompl_core::RunResult result;
-        result.run = run;
-        result.solved = pdef->hasExactSolution();
-        result.approximate = pdef->hasApproximateSolution();
-        result.status = setup.getLastPlannerStatus().asString();
-        result.time = setup.getLastPlanComputationTime();
-
+        ompl_core::RunResult result =
+            ompl_core::runResult(run, *setup.getProblemDefinition(), setup.getLastPlannerStatus(),
+                                 setup.getLastPlanComputationTime());
         ompl::base::PlannerData data(setup.getSpaceInformation());
         setup.getPlanner()->getPlannerData(data);
         result.details.addCount("tree_vertices", data.numVertices()).addCount("tree_edges", data.numEdges());

@@ -1,5 +1,6 @@
 #include "ompl_mm/io/SceneSvg.h"
 
+#include "ompl_core/io/SvgCanvas.h"
 #include "ompl_core/io/TextFormat.h"
 
 #include <ompl/base/ScopedState.h>
@@ -20,9 +21,7 @@ namespace ompl_mm
     {
         // the picture is laid out in pixels: world metres are mapped into a band between a title strip
         // and a legend strip, so line widths and fonts look the same for any scene size
-        constexpr double WIDTH_PX = 800.0;
-        constexpr double TITLE_PX = 32.0;
-        constexpr double LEGEND_PX = 36.0;
+        const ompl_core::SvgCanvas::Layout LAYOUT;  // the canvas's default strips
         constexpr double MARGIN_FRACTION = 0.05;
         constexpr unsigned int SUB_STEPS = 20;
         constexpr double HEIGHT_QUANTUM = 1e-6;
@@ -85,42 +84,14 @@ namespace ompl_mm
             std::optional<Footprint> robotEnd;
         };
 
-        /** Maps world x, y (y up) to picture pixels (y down). */
-        struct Frame
+        /** The canvas for a world box: a margin around it, at least a metre across, so a lone
+            object is not blown up to the whole picture. */
+        ompl_core::SvgCanvas fitCanvas(const Eigen::AlignedBox2d &box)
         {
-            Eigen::Vector2d min;  // world point at the left edge and the bottom of the drawing band
-            double top;           // world y at the top of the drawing band
-            double scale;         // pixels per metre
-            double height;        // of the whole picture, pixels
-
-            Eigen::Vector2d map(const Eigen::Vector2d &p) const
-            {
-                return {(p.x() - min.x()) * scale, TITLE_PX + (top - p.y()) * scale};
-            }
-        };
-
-        /** Fits the box, with a margin, to the picture's width. */
-        Frame fitFrame(const Eigen::AlignedBox2d &box)
-        {
-            // at least a metre across, so a lone object is not blown up to the whole picture
             const Eigen::Vector2d half = (box.sizes() / 2.0).cwiseMax(0.5);
             const Eigen::Vector2d margin = Eigen::Vector2d::Constant(MARGIN_FRACTION * 2.0 * half.maxCoeff());
-            const Eigen::Vector2d min = box.center() - half - margin;
-            const Eigen::Vector2d max = box.center() + half + margin;
-            const double scale = WIDTH_PX / (max.x() - min.x());
-            return {min, max.y(), scale, TITLE_PX + (max.y() - min.y()) * scale + LEGEND_PX};
-        }
-
-        /** Fixed two-decimal pixels: exact enough and byte-for-byte reproducible. */
-        std::string num(double value)
-        {
-            std::ostringstream s;
-            s.imbue(std::locale::classic());
-            s.setf(std::ios::fixed);
-            s.precision(2);
-            s << value;
-            const std::string text = s.str();
-            return text == "-0.00" ? "0.00" : text;
+            return ompl_core::SvgCanvas(
+                Eigen::AlignedBox2d(box.center() - half - margin, box.center() + half + margin), LAYOUT);
         }
 
         const char *kindColour(PrimitiveKind kind)
@@ -347,65 +318,18 @@ namespace ompl_mm
             return box;
         }
 
-        /** "x,y x,y …" in pixels. */
-        std::string pointList(const Frame &frame, const std::vector<Eigen::Vector2d> &points)
-        {
-            std::string list;
-            for (const Eigen::Vector2d &point : points)
-            {
-                const Eigen::Vector2d p = frame.map(point);
-                list += (list.empty() ? "" : " ") + num(p.x()) + "," + num(p.y());
-            }
-            return list;
-        }
-
-        void writeCircle(std::ostream &out, const Eigen::Vector2d &c, double r, const std::string &attributes,
-                         const std::string &content = "")
-        {
-            out << "<circle " << attributes << " cx=\"" << num(c.x()) << "\" cy=\"" << num(c.y()) << "\" r=\""
-                << num(r) << "\">" << content << "</circle>\n";
-        }
-
-        void writeLine(std::ostream &out, const Eigen::Vector2d &a, const Eigen::Vector2d &b,
-                       const std::string &attributes)
-        {
-            out << "<line " << attributes << " x1=\"" << num(a.x()) << "\" y1=\"" << num(a.y()) << "\" x2=\""
-                << num(b.x()) << "\" y2=\"" << num(b.y()) << "\"/>\n";
-        }
-
         /** One element for a footprint: a circle or a polygon; attributes are written verbatim. */
-        void writeFootprint(std::ostream &out, const Frame &frame, const Footprint &f,
+        void writeFootprint(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Footprint &f,
                             const std::string &attributes, const std::string &name)
         {
             const std::string title =
                 name.empty() ? "" : "<title>" + ompl_core::xmlEscaped(name) + "</title>";
             if (f.corners.empty())
-                writeCircle(out, frame.map(f.centre), f.radius * frame.scale, attributes, title);
+                ompl_core::SvgCanvas::writeCircle(out, canvas.map(f.centre), f.radius * canvas.scale(),
+                                                  attributes, title);
             else
-                out << "<polygon " << attributes << " points=\"" << pointList(frame, f.corners) << "\">"
+                out << "<polygon " << attributes << " points=\"" << canvas.pointList(f.corners) << "\">"
                     << title << "</polygon>\n";
-        }
-
-        void writeText(std::ostream &out, const Eigen::Vector2d &at, const std::string &text,
-                       const std::string &attributes)
-        {
-            out << "<text x=\"" << num(at.x()) << "\" y=\"" << num(at.y()) << "\" " << attributes << ">"
-                << ompl_core::xmlEscaped(text) << "</text>\n";
-        }
-
-        void writeHeader(std::ostream &out, const Frame &frame)
-        {
-            const std::string width = num(WIDTH_PX);
-            const std::string height = num(frame.height);
-            out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                << R"(<svg xmlns="http://www.w3.org/2000/svg" width=")" << width << R"(" height=")" << height
-                << R"(" viewBox="0.00 0.00 )" << width << " " << height << R"(" font-family="sans-serif">)"
-                << "\n"
-                << R"(<defs><marker id="arrowhead" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="5" )"
-                << R"(markerHeight="5" orient="auto"><path d="M0,0 L10,5 L0,10 z" fill=")" << ARROW_COLOUR
-                << "\"/></marker></defs>\n"
-                << R"(<rect class="background" x="0" y="0" width="100%" height="100%" fill="white"/>)"
-                << "\n";
         }
 
         /** Attributes of a dashed outline (a start pose). */
@@ -422,98 +346,105 @@ namespace ompl_mm
                    R"(" stroke=")" + colour + R"(" stroke-width="1")";
         }
 
-        void writeGround(std::ostream &out, const Frame &frame, const Picture &picture)
+        void writeGround(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Picture &picture)
         {
             // floor slabs are faint so the floor's outline and anything on it stay readable
             for (const GroundItem &item : picture.ground)
-                writeFootprint(out, frame, item.footprint,
+                writeFootprint(out, canvas, item.footprint,
                                item.isSurface
                                    ? fillStyle("surface", SURFACE_COLOUR, "1")
                                    : fillStyle("obstacle", OBSTACLE_COLOUR, item.faint ? "0.25" : "1"),
                                item.name);
         }
 
-        void writeObjectsAndRobot(std::ostream &out, const Frame &frame, const Scene &scene,
+        void writeObjectsAndRobot(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Scene &scene,
                                   const Picture &picture)
         {
             // the robot under the objects it touches; start outlines last, so fills never hide them
             if (picture.robotStart)
-                writeFootprint(out, frame, *picture.robotStart, outlineStyle("robot-start", ROBOT_COLOUR),
+                writeFootprint(out, canvas, *picture.robotStart, outlineStyle("robot-start", ROBOT_COLOUR),
                                "robot");
             if (picture.robotEnd)
-                writeFootprint(out, frame, *picture.robotEnd, fillStyle("robot-end", ROBOT_COLOUR, "0.35"),
+                writeFootprint(out, canvas, *picture.robotEnd, fillStyle("robot-end", ROBOT_COLOUR, "0.35"),
                                "robot");
             for (std::size_t i = 0; i < picture.objectEnd.size(); ++i)
-                writeFootprint(out, frame, picture.objectEnd[i],
+                writeFootprint(out, canvas, picture.objectEnd[i],
                                fillStyle("object-end", objectColour(i), "0.85"), scene.objects[i].name);
             for (std::size_t i = 0; i < picture.objectStart.size(); ++i)
-                writeFootprint(out, frame, picture.objectStart[i],
+                writeFootprint(out, canvas, picture.objectStart[i],
                                outlineStyle("object-start", objectColour(i)), scene.objects[i].name);
         }
 
-        void writePath(std::ostream &out, const Frame &frame, const Picture &picture)
+        void writePath(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Picture &picture)
         {
             for (const ToolSegment &segment : picture.segments)
             {
                 out << "<polyline class=\"tool-path\" fill=\"none\" stroke=\"" << kindColour(segment.kind)
                     << R"(" stroke-width="2.5" stroke-linecap="round" stroke-linejoin="round" points=")"
-                    << pointList(frame, segment.points) << "\"><title>" << primitiveKindName(segment.kind)
+                    << canvas.pointList(segment.points) << "\"><title>" << primitiveKindName(segment.kind)
                     << "</title></polyline>\n";
             }
             for (const auto &[from, to] : picture.pushArrows)
-                writeLine(out, frame.map(from), frame.map(to),
-                          std::string("class=\"push-arrow\" ") + ARROW_STYLE);
+                ompl_core::SvgCanvas::writeLine(out, canvas.map(from), canvas.map(to),
+                                                std::string("class=\"push-arrow\" ") + ARROW_STYLE);
             for (const Eigen::Vector2d &waypoint : picture.waypoints)
-                writeCircle(out, frame.map(waypoint), 2.5, R"(class="waypoint" fill="black")");
+                ompl_core::SvgCanvas::writeCircle(out, canvas.map(waypoint), 2.5,
+                                                  R"(class="waypoint" fill="black")");
         }
 
         /** A ring with a cross, centred at c (pixels), over a white halo so it shows on any fill. */
         void writeGoalSymbol(std::ostream &out, const Eigen::Vector2d &c, const std::string &colour,
                              const char *cls)
         {
-            const std::string shape = "<circle cx=\"" + num(c.x()) + "\" cy=\"" + num(c.y()) +
-                                      "\" r=\"7\"/><path d=\"M" + num(c.x() - 10) + "," + num(c.y()) + " H" +
-                                      num(c.x() + 10) + " M" + num(c.x()) + "," + num(c.y() - 10) + " V" +
-                                      num(c.y() + 10) + "\"/>";
+            const std::string shape =
+                "<circle cx=\"" + ompl_core::SvgCanvas::number(c.x()) + "\" cy=\"" +
+                ompl_core::SvgCanvas::number(c.y()) + "\" r=\"7\"/><path d=\"M" +
+                ompl_core::SvgCanvas::number(c.x() - 10) + "," + ompl_core::SvgCanvas::number(c.y()) + " H" +
+                ompl_core::SvgCanvas::number(c.x() + 10) + " M" + ompl_core::SvgCanvas::number(c.x()) + "," +
+                ompl_core::SvgCanvas::number(c.y() - 10) + " V" + ompl_core::SvgCanvas::number(c.y() + 10) +
+                "\"/>";
             out << "<g class=\"" << cls << "\" fill=\"none\"><g stroke=\"white\" stroke-width=\"4\">" << shape
                 << "</g><g stroke=\"" << colour << "\" stroke-width=\"2\">" << shape << "</g></g>\n";
         }
 
         /** Where a footprint's label goes: just above it, so the path and arrows inside stay visible. */
-        Eigen::Vector2d labelAnchor(const Frame &frame, const Footprint &f)
+        Eigen::Vector2d labelAnchor(const ompl_core::SvgCanvas &canvas, const Footprint &f)
         {
             double halfHeight = f.radius;
             for (const Eigen::Vector2d &corner : f.corners)
                 halfHeight = std::max(halfHeight, std::abs(corner.y() - f.centre.y()));
-            return frame.map(f.centre) - Eigen::Vector2d(0.0, halfHeight * frame.scale + 5.0);
+            return canvas.map(f.centre) - Eigen::Vector2d(0.0, halfHeight * canvas.scale() + 5.0);
         }
 
-        void writeLabels(std::ostream &out, const Frame &frame, const Scene &scene, const Picture &picture)
+        void writeLabels(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Scene &scene,
+                         const Picture &picture)
         {
             const std::string style =
                 "class=\"label\" font-size=\"12\" text-anchor=\"middle\" stroke=\"white\" stroke-width=\"3\" "
                 "paint-order=\"stroke\" fill=\"black\"";
             for (const GoalMarker &goal : picture.goals)
             {
-                writeGoalSymbol(out, frame.map(goal.at), goal.colour, "goal");
-                writeText(out, frame.map(goal.at) + Eigen::Vector2d(0.0, 24.0), goal.label, style);
+                writeGoalSymbol(out, canvas.map(goal.at), goal.colour, "goal");
+                ompl_core::SvgCanvas::writeText(out, canvas.map(goal.at) + Eigen::Vector2d(0.0, 24.0),
+                                                goal.label, style);
             }
             // an object that moved is named at both places, unless the two names would overlap
             for (std::size_t i = 0; i < picture.objectStart.size(); ++i)
             {
-                const Eigen::Vector2d start = labelAnchor(frame, picture.objectStart[i]);
+                const Eigen::Vector2d start = labelAnchor(canvas, picture.objectStart[i]);
                 bool nameStart = true;
                 if (i < picture.objectEnd.size())
                 {
-                    const Eigen::Vector2d end = labelAnchor(frame, picture.objectEnd[i]);
-                    writeText(out, end, scene.objects[i].name, style);
+                    const Eigen::Vector2d end = labelAnchor(canvas, picture.objectEnd[i]);
+                    ompl_core::SvgCanvas::writeText(out, end, scene.objects[i].name, style);
                     nameStart = std::abs(end.x() - start.x()) > 40.0 || std::abs(end.y() - start.y()) > 14.0;
                 }
                 if (nameStart)
-                    writeText(out, start, scene.objects[i].name, style);
+                    ompl_core::SvgCanvas::writeText(out, start, scene.objects[i].name, style);
             }
             if (picture.robotStart)
-                writeText(out, labelAnchor(frame, *picture.robotStart), "robot", style);
+                ompl_core::SvgCanvas::writeText(out, labelAnchor(canvas, *picture.robotStart), "robot",
+                                                style);
         }
 
         /** Largest power of ten at most a quarter of the width (1 m for room-sized scenes). */
@@ -522,52 +453,58 @@ namespace ompl_mm
             return std::pow(10.0, std::floor(std::log10(metresAcross / 4.0)));
         }
 
-        void writeTitleAndScale(std::ostream &out, const Frame &frame, const Scene &scene,
+        void writeTitleAndScale(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Scene &scene,
                                 const ManipulationPath *path)
         {
             std::string title = "scene " + (scene.name.empty() ? std::string("(unnamed)") : scene.name);
             if (path != nullptr)
-                title += ": " + std::to_string(path->getStateCount()) + " waypoints, tool path " +
-                         num(path->getStateCount() > 0 ? path->toolPathLength() : 0.0) + " m";
-            writeText(out, {12.0, 21.0}, title, "class=\"title\" font-size=\"15\" font-weight=\"bold\"");
+                title +=
+                    ": " + std::to_string(path->getStateCount()) + " waypoints, tool path " +
+                    ompl_core::SvgCanvas::number(path->getStateCount() > 0 ? path->toolPathLength() : 0.0) +
+                    " m";
+            ompl_core::SvgCanvas::writeText(out, {12.0, 21.0}, title,
+                                            "class=\"title\" font-size=\"15\" font-weight=\"bold\"");
 
-            const double metres = scaleBarLength(WIDTH_PX / frame.scale);
-            const double length = metres * frame.scale;
-            const double right = WIDTH_PX - 12.0;
-            out << "<path class=\"scale-bar\" d=\"M" << num(right - length) << ",12.00 V20.00 H" << num(right)
+            const double metres = scaleBarLength(LAYOUT.widthPx / canvas.scale());
+            const double length = metres * canvas.scale();
+            const double right = LAYOUT.widthPx - 12.0;
+            out << "<path class=\"scale-bar\" d=\"M" << ompl_core::SvgCanvas::number(right - length)
+                << ",12.00 V20.00 H" << ompl_core::SvgCanvas::number(right)
                 << " V12.00\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>\n";
             std::ostringstream label;
             label.imbue(std::locale::classic());
             label << metres << " m";
-            writeText(out, {right - length - 6.0, 21.0}, label.str(),
-                      "class=\"scale-label\" font-size=\"12\" text-anchor=\"end\"");
+            ompl_core::SvgCanvas::writeText(out, {right - length - 6.0, 21.0}, label.str(),
+                                            "class=\"scale-label\" font-size=\"12\" text-anchor=\"end\"");
         }
 
-        void writeLegend(std::ostream &out, const Frame &frame)
+        void writeLegend(std::ostream &out, const ompl_core::SvgCanvas &canvas)
         {
-            const double y = frame.height - LEGEND_PX / 2.0;
+            const double y = canvas.height() - LAYOUT.legendPx / 2.0;
             double x = 16.0;
             const std::string text = "class=\"legend\" font-size=\"12\"";
             for (PrimitiveKind kind : {PrimitiveKind::Transit, PrimitiveKind::Push, PrimitiveKind::Pickup,
                                        PrimitiveKind::Transfer})
             {
-                writeLine(out, {x, y}, {x + 24, y},
-                          std::string("stroke=\"") + kindColour(kind) + "\" stroke-width=\"2.5\"");
-                writeText(out, {x + 30, y + 4}, primitiveKindName(kind), text);
+                ompl_core::SvgCanvas::writeLine(
+                    out, {x, y}, {x + 24, y},
+                    std::string("stroke=\"") + kindColour(kind) + "\" stroke-width=\"2.5\"");
+                ompl_core::SvgCanvas::writeText(out, {x + 30, y + 4}, primitiveKindName(kind), text);
                 x += 100.0;
             }
-            writeCircle(out, {x + 8, y}, 7.0,
-                        R"(fill="none" stroke="black" stroke-width="1.5" stroke-dasharray="4 3")");
-            writeText(out, {x + 22, y + 4}, "start", text);
+            ompl_core::SvgCanvas::writeCircle(
+                out, {x + 8, y}, 7.0,
+                R"(fill="none" stroke="black" stroke-width="1.5" stroke-dasharray="4 3")");
+            ompl_core::SvgCanvas::writeText(out, {x + 22, y + 4}, "start", text);
             x += 80.0;
-            writeCircle(out, {x + 8, y}, 7.0, R"(fill="#777777")");
-            writeText(out, {x + 22, y + 4}, "end", text);
+            ompl_core::SvgCanvas::writeCircle(out, {x + 8, y}, 7.0, R"(fill="#777777")");
+            ompl_core::SvgCanvas::writeText(out, {x + 22, y + 4}, "end", text);
             x += 70.0;
             writeGoalSymbol(out, {x + 8, y}, "black", "legend");
-            writeText(out, {x + 24, y + 4}, "goal", text);
+            ompl_core::SvgCanvas::writeText(out, {x + 24, y + 4}, "goal", text);
             x += 70.0;
-            writeLine(out, {x, y}, {x + 28, y}, ARROW_STYLE);
-            writeText(out, {x + 34, y + 4}, "pushed object", text);
+            ompl_core::SvgCanvas::writeLine(out, {x, y}, {x + 28, y}, ARROW_STYLE);
+            ompl_core::SvgCanvas::writeText(out, {x + 34, y + 4}, "pushed object", text);
         }
     }  // namespace
 
@@ -575,14 +512,17 @@ namespace ompl_mm
     {
         const Scene &scene = setup.model()->scene();
         const Picture picture = buildPicture(setup, path);
-        const Frame frame = fitFrame(bounds(picture));
-        writeHeader(out, frame);
-        writeGround(out, frame, picture);
-        writeObjectsAndRobot(out, frame, scene, picture);
-        writePath(out, frame, picture);
-        writeLabels(out, frame, scene, picture);
-        writeTitleAndScale(out, frame, scene, path);
-        writeLegend(out, frame);
-        out << "</svg>\n";
+        const ompl_core::SvgCanvas canvas = fitCanvas(bounds(picture));
+        canvas.writeHeader(
+            out, std::string(R"(<marker id="arrowhead" viewBox="0 0 10 10" refX="9" refY="5" )") +
+                     R"(markerWidth="5" markerHeight="5" orient="auto"><path d="M0,0 L10,5 L0,10 z" fill=")" +
+                     ARROW_COLOUR + "\"/></marker>");
+        writeGround(out, canvas, picture);
+        writeObjectsAndRobot(out, canvas, scene, picture);
+        writePath(out, canvas, picture);
+        writeLabels(out, canvas, scene, picture);
+        writeTitleAndScale(out, canvas, scene, path);
+        writeLegend(out, canvas);
+        ompl_core::SvgCanvas::writeFooter(out);
     }
 }  // namespace ompl_mm

@@ -2,8 +2,6 @@
 
 #include "ompl_core/io/InputError.h"
 
-#include <cmath>
-
 namespace ompl_mm
 {
     ManipulationModel::ManipulationModel(Scene scene, RobotModel robot)
@@ -24,16 +22,5 @@ namespace ompl_mm
         Eigen::Isometry3d frame = robot_.linkFrame(q, scene_.robot.basePose, toolLink_);
         frame.translation() = frame * scene_.robot.toolOffset;
         return frame;
-    }
-
-    int ManipulationModel::restingSurface(const Eigen::Vector3d &position) const
-    {
-        for (std::size_t i = 0; i < scene_.surfaces.size(); ++i)
-        {
-            const SupportSurface &s = scene_.surfaces[i];
-            if (std::abs(position.z() - s.height) < REST_TOLERANCE && s.contains(position.x(), position.y()))
-                return static_cast<int>(i);
-        }
-        return -1;
     }
 }  // namespace ompl_mm

@@ -27,4 +27,12 @@ namespace ompl_mm
                 return static_cast<int>(i);
         return -1;
     }
+
+    int Scene::restingSurface(const Eigen::Vector3d &base) const
+    {
+        for (std::size_t i = 0; i < surfaces.size(); ++i)
+            if (surfaces[i].supports(base))
+                return static_cast<int>(i);
+        return -1;
+    }
 }  // namespace ompl_mm

@@ -17,10 +17,6 @@ namespace ompl_mm
     {
         namespace fs = std::filesystem;
 
-        /** An object rests on a surface when its base height differs from the surface height by
-            less than this, metres (the tolerance of the original MOPL implementation). */
-        constexpr double RESTING_TOLERANCE = 1e-4;
-
         Shape readShape(const ompl_core::XmlElement &element)
         {
             Shape shape;
@@ -73,6 +69,9 @@ namespace ompl_mm
         private:
             void readRobot(const ompl_core::XmlElement &element);
             std::string resolveUrdf(const ompl_core::XmlElement &element) const;
+            /** The name of an obstacle or object, which carries no other attribute; obstacles and
+                objects share one name space, the collision world's. */
+            std::string claimBodyName(const ompl_core::XmlElement &element);
             void readObstacle(const ompl_core::XmlElement &element);
             void readSurface(const ompl_core::XmlElement &element);
             void readRegion(const ompl_core::XmlElement &element);
@@ -168,13 +167,19 @@ namespace ompl_mm
             return (error ? path : absolute).lexically_normal().string();
         }
 
-        void SceneParser::readObstacle(const ompl_core::XmlElement &element)
+        std::string SceneParser::claimBodyName(const ompl_core::XmlElement &element)
         {
             element.checkAttributes({"name"});
+            const std::string name = element.text("name");
+            ompl_core::claimName(bodies_, element, name, "duplicate name '" + name + "'");
+            return name;
+        }
+
+        void SceneParser::readObstacle(const ompl_core::XmlElement &element)
+        {
             Obstacle obstacle;
-            obstacle.name = element.text("name");
+            obstacle.name = claimBodyName(element);
             obstacle.where = element.where();
-            ompl_core::claimName(bodies_, element, obstacle.name, "duplicate name '" + obstacle.name + "'");
             std::vector<ompl_core::XmlElement> shapes;
             ompl_core::FirstUses singles;
             for (const ompl_core::XmlElement &child :
@@ -232,11 +237,9 @@ namespace ompl_mm
 
         void SceneParser::readObject(const ompl_core::XmlElement &element)
         {
-            element.checkAttributes({"name"});
             MovableObject object;
-            object.name = element.text("name");
+            object.name = claimBodyName(element);
             object.where = element.where();
-            ompl_core::claimName(bodies_, element, object.name, "duplicate name '" + object.name + "'");
             object.shape = readOnlyShape(element, element.children({"box", "cylinder", "sphere"}));
             scene_.objects.push_back(object);
         }
@@ -286,10 +289,8 @@ namespace ompl_mm
         void SceneParser::checkResting(const ompl_core::XmlElement &element,
                                        const MovableObject &object) const
         {
-            const Eigen::Vector3d &p = object.start.position;
-            for (const SupportSurface &surface : scene_.surfaces)
-                if (std::abs(p.z() - surface.height) < RESTING_TOLERANCE && surface.contains(p.x(), p.y()))
-                    return;
+            if (scene_.restingSurface(object.start.position) >= 0)
+                return;
             element.fail("xyz",
                          "start of object '" + object.name +
                              "' does not rest on any <surface>: z must equal a surface's height (within "

@@ -78,7 +78,7 @@ namespace ompl_mm
         for (unsigned int i = 0; i < model_->objectCount(); ++i)
         {
             const MovableObject &object = scene.objects[i];
-            if (model_->restingSurface(object.start.position) < 0)
+            if (model_->scene().restingSurface(object.start.position) < 0)
                 throw ompl_core::InputError(object.where,
                                             "object '" + object.name + "' starts on no support surface");
             space_->setObjectPose(start.get(), i, object.start);

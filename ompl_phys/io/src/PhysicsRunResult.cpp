@@ -27,14 +27,9 @@ namespace ompl_phys
     ompl_core::RunResult physicsRunResult(const ompl_core::RunDescription &run, const PhysicsSetup &setup,
                                           const SimulatedPath *simulated)
     {
-        const ompl::base::ProblemDefinitionPtr &pdef = setup.getProblemDefinition();
-        ompl_core::RunResult result;
-        result.run = run;
-        result.solved = pdef->hasExactSolution();
-        result.approximate = pdef->hasApproximateSolution();
-        result.status = setup.getLastPlannerStatus().asString();
-        result.time = setup.getLastPlanComputationTime();
-
+        ompl_core::RunResult result =
+            ompl_core::runResult(run, *setup.getProblemDefinition(), setup.getLastPlannerStatus(),
+                                 setup.getLastPlanComputationTime());
         std::vector<std::string> occupants;
         for (std::size_t body : setup.knowledge().goalOccupants(setup.world().startStates()))
             occupants.push_back(setup.world().movingBodyName(body));

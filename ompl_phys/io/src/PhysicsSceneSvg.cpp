@@ -1,20 +1,16 @@
 #include "ompl_phys/io/PhysicsSceneSvg.h"
 
-#include "ompl_core/io/TextFormat.h"
+#include "ompl_core/io/SvgCanvas.h"
 #include "ompl_phys/knowledge/Footprint.h"
 
 #include <cmath>
-#include <locale>
-#include <sstream>
 #include <vector>
 
 namespace ompl_phys
 {
     namespace
     {
-        constexpr double WIDTH_PX = 700.0;
-        constexpr double TITLE_PX = 30.0;
-        constexpr double LEGEND_PX = 30.0;
+        const ompl_core::SvgCanvas::Layout LAYOUT{700.0, 30.0, 30.0};
         constexpr double MARGIN_M = 0.1;
         constexpr double CIRCLE_SEGMENTS = 32;
         /** A body whose centre moved less than this is not drawn as pushed, m. */
@@ -25,31 +21,6 @@ namespace ompl_phys
         const char *const GOAL_COLOUR = "#2ca02c";
         const std::vector<const char *> BODY_PALETTE = {"#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
                                                         "#bcbd22", "#17becf", "#d62728"};
-
-        /** Maps world metres to picture pixels, y up in the world and down in the picture. */
-        class Canvas
-        {
-        public:
-            Canvas(const Eigen::AlignedBox2d &world) : world_(world)
-            {
-                scale_ = WIDTH_PX / world.sizes().x();
-            }
-            double height() const { return TITLE_PX + world_.sizes().y() * scale_ + LEGEND_PX; }
-            double x(double wx) const { return (wx - world_.min().x()) * scale_; }
-            double y(double wy) const { return TITLE_PX + (world_.max().y() - wy) * scale_; }
-            double length(double metres) const { return metres * scale_; }
-            std::string point(const Eigen::Vector2d &p) const
-            {
-                std::ostringstream out;
-                out.imbue(std::locale::classic());
-                out << x(p.x()) << ',' << y(p.y());
-                return out.str();
-            }
-
-        private:
-            Eigen::AlignedBox2d world_;
-            double scale_{1.0};
-        };
 
         /** The outline of a shape at (position, yaw) as floor points. */
         std::vector<Eigen::Vector2d> outline(const PhysicsShape &shape, const Eigen::Vector2d &position,
@@ -83,33 +54,16 @@ namespace ompl_phys
             return world;
         }
 
-        /** A <polygon> or <polyline> through the floor points. */
-        void pointList(std::ostream &out, const char *tag, const Canvas &canvas,
-                       const std::vector<Eigen::Vector2d> &points, const std::string &style)
+        void polyline(std::ostream &out, const ompl_core::SvgCanvas &canvas,
+                      const std::vector<Eigen::Vector2d> &points, const std::string &style)
         {
-            out << '<' << tag << " points=\"";
-            for (const Eigen::Vector2d &p : points)
-                out << canvas.point(p) << ' ';
-            out << "\" " << style << "/>\n";
+            canvas.writePolyline(out, points, "fill=\"none\" " + style);
         }
 
-        void polygon(std::ostream &out, const Canvas &canvas, const std::vector<Eigen::Vector2d> &points,
-                     const std::string &style)
+        void circle(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Eigen::Vector2d &centre,
+                    double radius, const std::string &style)
         {
-            pointList(out, "polygon", canvas, points, style);
-        }
-
-        void polyline(std::ostream &out, const Canvas &canvas, const std::vector<Eigen::Vector2d> &points,
-                      const std::string &style)
-        {
-            pointList(out, "polyline", canvas, points, "fill=\"none\" " + style);
-        }
-
-        void circle(std::ostream &out, const Canvas &canvas, const Eigen::Vector2d &centre, double radius,
-                    const std::string &style)
-        {
-            out << "<circle cx=\"" << canvas.x(centre.x()) << "\" cy=\"" << canvas.y(centre.y()) << "\" r=\""
-                << canvas.length(radius) << "\" " << style << "/>\n";
+            ompl_core::SvgCanvas::writeCircle(out, canvas.map(centre), radius * canvas.scale(), style);
         }
 
         Eigen::AlignedBox2d drawingArea(const PhysicsScene &scene)
@@ -126,11 +80,11 @@ namespace ompl_phys
                                        area.max() + Eigen::Vector2d::Constant(MARGIN_M));
         }
 
-        void drawBody(std::ostream &out, const Canvas &canvas, const PhysicsBody &body,
+        void drawBody(std::ostream &out, const ompl_core::SvgCanvas &canvas, const PhysicsBody &body,
                       const BodyState &state, const std::string &style)
         {
             const double yaw = yawOf(state.orientation);
-            polygon(out, canvas, outline(body.shape, state.position.head<2>(), yaw), style);
+            canvas.writePolygon(out, outline(body.shape, state.position.head<2>(), yaw), style);
             if (body.kind != BodyKind::Constrained)
                 return;
             const Eigen::Vector2d axis = (state.orientation * body.push.axis).head<2>().normalized();
@@ -146,20 +100,17 @@ namespace ompl_phys
     {
         const PhysicsScene &scene = setup.scene();
         const PhysicsWorld &world = setup.world();
-        const Canvas canvas(drawingArea(scene));
-        out.imbue(std::locale::classic());
-        out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << WIDTH_PX << "\" height=\""
-            << canvas.height() << "\" font-family=\"sans-serif\" font-size=\"14\">\n"
-            << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n"
-            << "<text x=\"8\" y=\"20\">" << ompl_core::xmlEscaped(title) << "</text>\n";
+        const ompl_core::SvgCanvas canvas(drawingArea(scene), LAYOUT);
+        canvas.writeHeader(out, "");
+        ompl_core::SvgCanvas::writeText(out, {8.0, 20.0}, title, "font-size=\"14\"");
         const Eigen::Vector2d floorHalf = 0.5 * scene.floorSize;
         if (scene.floorSize.x() > 0.0)
-            polygon(out, canvas,
-                    {{-floorHalf.x(), -floorHalf.y()},
-                     {floorHalf.x(), -floorHalf.y()},
-                     floorHalf,
-                     {-floorHalf.x(), floorHalf.y()}},
-                    "fill=\"#f4f1ea\" stroke=\"#cccccc\"");
+            canvas.writePolygon(out,
+                                {{-floorHalf.x(), -floorHalf.y()},
+                                 {floorHalf.x(), -floorHalf.y()},
+                                 floorHalf,
+                                 {-floorHalf.x(), floorHalf.y()}},
+                                "fill=\"#f4f1ea\" stroke=\"#cccccc\"");
         circle(
             out, canvas, scene.goal.centre, scene.goal.radius,
             std::string("fill=\"") + GOAL_COLOUR + "\" fill-opacity=\"0.3\" stroke=\"" + GOAL_COLOUR + "\"");
@@ -201,8 +152,9 @@ namespace ompl_phys
                std::string("fill=\"none\" stroke=\"") + ROBOT_COLOUR + "\" stroke-width=\"2\"");
         circle(out, canvas, end[0].position.head<2>(), scene.robot.radius,
                std::string("fill=\"") + ROBOT_COLOUR + "\"");
-        out << "<text x=\"8\" y=\"" << canvas.height() - 10
-            << "\">grey: fixed · dashed: start · filled: end · blue: robot path · green: "
-               "goal</text>\n</svg>\n";
+        ompl_core::SvgCanvas::writeText(
+            out, {8.0, canvas.height() - 10.0},
+            "grey: fixed · dashed: start · filled: end · blue: robot path · green: goal", "font-size=\"14\"");
+        ompl_core::SvgCanvas::writeFooter(out);
     }
 }  // namespace ompl_phys

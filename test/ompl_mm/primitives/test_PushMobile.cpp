@@ -91,7 +91,7 @@ TEST_F(MobilePush, NotUsefulWhenAnObjectIsLifted)
 TEST_F(LedgePush, NotUsefulWhenTheHeightChanges)
 {
     // obj4 from the floor onto the ledge: both rest, but it does not slide
-    ASSERT_GE(space_.model()->restingSurface(Eigen::Vector3d(1.0, 2.0, 0.2)), 0);
+    ASSERT_GE(space_.model()->scene().restingSurface(Eigen::Vector3d(1.0, 2.0, 0.2)), 0);
     object(to_, OBJ4, V2(1.0, 2.0), 0.2);
     EXPECT_FALSE(push_.isUseful(from_, to_));
     // it slides when the heights agree

@@ -16,6 +16,22 @@ using namespace ompl_mm;
 using namespace ompl_mm::test;
 namespace ob = ompl::base;
 
+namespace
+{
+    /** How many segments OMPL's motion checks split a 1 m motion of the robot's first joint into. */
+    unsigned int segmentsOfAMetreLongMotion(const ManipulationSetup &setup)
+    {
+        const ManipulationStateSpace &space = *setup.manipulationSpace();
+        ob::State *a = space.cloneState(setup.getProblemDefinition()->getStartState(0));
+        ob::State *b = space.cloneState(a);
+        space.robotValues(b)[0] -= 1.0;
+        const unsigned int count = space.validSegmentCount(a, b);
+        space.freeState(a);
+        space.freeState(b);
+        return count;
+    }
+}  // namespace
+
 TEST(ManipulationSetup, BuildsMobileBlocked)
 {
     const Scene scene = mobileBlockedScene();
@@ -63,13 +79,7 @@ TEST(ManipulationSetup, PlannerParametersAreApplied)
 
     // the connect step is the collision resolution: 20 steps for a 1 m robot motion
     setup.setup();
-    const ManipulationStateSpace &space = *setup.manipulationSpace();
-    ob::State *a = space.cloneState(setup.getProblemDefinition()->getStartState(0));
-    ob::State *b = space.cloneState(a);
-    space.robotValues(b)[0] -= 1.0;
-    EXPECT_NEAR(space.validSegmentCount(a, b), 1.0 / 0.05, 1.0);
-    space.freeState(a);
-    space.freeState(b);
+    EXPECT_NEAR(segmentsOfAMetreLongMotion(setup), 1.0 / 0.05, 1.0);
 }
 
 TEST(ManipulationSetup, ConnectStepSetLaterIsTheCollisionResolution)
@@ -78,13 +88,7 @@ TEST(ManipulationSetup, ConnectStepSetLaterIsTheCollisionResolution)
     setup.setup();
     // after setup, through the declared parameter as a user or a cfg file would
     ASSERT_TRUE(setup.getPlanner()->params().setParam("connect_step", "0.01"));
-    const ManipulationStateSpace &space = *setup.manipulationSpace();
-    ob::State *a = space.cloneState(setup.getProblemDefinition()->getStartState(0));
-    ob::State *b = space.cloneState(a);
-    space.robotValues(b)[0] -= 1.0;
-    EXPECT_NEAR(space.validSegmentCount(a, b), 1.0 / 0.01, 1.0);
-    space.freeState(a);
-    space.freeState(b);
+    EXPECT_NEAR(segmentsOfAMetreLongMotion(setup), 1.0 / 0.01, 1.0);
 }
 
 TEST(ManipulationSetup, PlansAfterTheSceneIsGone)

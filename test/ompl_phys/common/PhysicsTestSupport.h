@@ -2,7 +2,7 @@
 // capture, bit-exact comparison of simulated states.
 #pragma once
 
-#include "ompl_core/io/InputError.h"
+#include "common/InputErrors.h"
 #include "ompl_phys/knowledge/Footprint.h"
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
 #include "ompl_phys/world/BodyState.h"
@@ -14,6 +14,10 @@
 
 namespace ompl_phys::test
 {
+    using ompl_core::test::contains;
+    using ompl_core::test::inputErrorOf;
+    using ompl_core::test::startsWith;
+
     /** Path of the benchmark scene n (1, 2 or 3). */
     inline std::string benchmarkScenePath(int n)
     {
@@ -71,33 +75,6 @@ namespace ompl_phys::test
     inline PhysicsScene smallScene()
     {
         return parsePhysicsScene(joinLines(smallSceneLines()), "small.xml");
-    }
-
-    /** The message of the ompl_core::InputError that f() throws, or "" when it throws none. */
-    template <typename F>
-    std::string inputErrorOf(F &&f)
-    {
-        try
-        {
-            f();
-        }
-        catch (const ompl_core::InputError &e)
-        {
-            return e.what();
-        }
-        return "";
-    }
-
-    /** True when text begins with prefix. */
-    inline bool startsWith(const std::string &text, const std::string &prefix)
-    {
-        return text.compare(0, prefix.size(), prefix) == 0;
-    }
-
-    /** True when text contains part. */
-    inline bool contains(const std::string &text, const std::string &part)
-    {
-        return text.find(part) != std::string::npos;
     }
 
     /** True when two doubles have the same bits (so -0.0 differs from 0.0 and a NaN equals itself). */
