@@ -1,5 +1,7 @@
 #include "ompl_mm/geometric/ManipulationPath.h"
 
+#include <cassert>
+
 #include <ompl/base/SpaceInformation.h>
 
 namespace ompl_mm
@@ -22,6 +24,7 @@ namespace ompl_mm
             throw ompl::Exception("ManipulationPath::appendLabelled on an empty path");
         append(state);
         labels_.push_back(label);
+        assert(labels_.size() + 1 == states_.size());  // one label per segment
     }
 
     void ManipulationPath::shortcut(std::size_t first, std::size_t last)
@@ -32,6 +35,7 @@ namespace ompl_mm
             si_->freeState(states_[i]);
         states_.erase(states_.begin() + first + 1, states_.begin() + last);
         labels_.erase(labels_.begin() + first + 1, labels_.begin() + last);
+        assert(labels_.size() + 1 == states_.size());
     }
 
     void ManipulationPath::removeRepeatedStates()

@@ -1,5 +1,7 @@
 #include "ompl_mm/planners/ManipulationTree.h"
 
+#include <cassert>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -36,6 +38,7 @@ namespace ompl_mm
 
     int ManipulationTree::add(const ompl::base::State *state, int parent, SegmentLabel label)
     {
+        assert(parent < static_cast<int>(vertices_.size()));
         const int index = static_cast<int>(vertices_.size());
         Vertex vertex{space_->cloneState(state), parent, label, {}, groups_.size()};
         metric_->makePoint(vertex.state, vertex.point);
@@ -52,6 +55,8 @@ namespace ompl_mm
         double *packed = group.packed.data() + group.packed.size() - stride;
         metric_->packVertex(vertices_.back().point, vertices_[group.first].point, packed);
         extendBounds(group.bounds, vertices_.back().point, packed);
+        // a group's members share its objects' configuration: their packed data lie side by side
+        assert(group.packed.size() == group.members.size() * stride);
         if (parent < 0)
             ++roots_;
         return index;

@@ -1,5 +1,7 @@
 #include "ompl_phys/control/PhysicsStatePropagator.h"
 
+#include <cassert>
+
 #include <ompl/control/SpaceInformation.h>
 #include <ompl/control/spaces/RealVectorControlSpace.h>
 
@@ -37,6 +39,7 @@ namespace ompl_phys
 
         PhysicsWorld::resetRandomSeed();
         space_.readState(state, states_);
+        assert(states_.size() == world_->movingBodyCount());  // the space and the world hold the same bodies
         world_->setStates(states_);
         Violation violation = Violation::None;
         for (unsigned int k = 0; k < substeps && violation == Violation::None; ++k)
