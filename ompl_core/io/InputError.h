@@ -1,5 +1,3 @@
-/* The exception for bad user input (scene files, URDF files, parameters, command lines): its
-   message starts with "file:line: " when the place is known, so a user can jump to the fault. */
 #pragma once
 
 #include "ompl_core/io/SourceLocation.h"
@@ -10,7 +8,9 @@
 
 namespace ompl_core
 {
-    /** Thrown for any fault of the user's input; an ompl::Exception, so OMPL's habits apply. */
+    /** The exception for bad user input (scene files, URDF files, parameters, command lines): its
+        message starts with "file:line: " when the place is known, so a user can jump to the fault.
+        An ompl::Exception, so code that catches OMPL's exceptions catches it too. */
     class InputError : public ompl::Exception
     {
     public:
@@ -18,7 +18,7 @@ namespace ompl_core
             when where.file is empty. */
         InputError(const SourceLocation &where, const std::string &message);
 
-        /** A message that names no file (e.g. a command-line option). */
+        /** A message that names no file (for a command-line option, say). */
         explicit InputError(const std::string &message);
     };
 }  // namespace ompl_core

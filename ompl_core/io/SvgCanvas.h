@@ -1,7 +1,3 @@
-/* A top-down SVG picture of a planar world: world metres (x right, y up) are mapped into a band of
-   a fixed pixel width between a title strip and a legend strip, so line widths and fonts look the
-   same for any scene size. Every number is written with two decimals in the classic locale, so
-   the same picture is the same bytes. Shared by the picture writers of both libraries. */
 #pragma once
 
 #include <Eigen/Core>
@@ -13,6 +9,12 @@
 
 namespace ompl_core
 {
+    /** A top-down SVG picture of a planar world: world metres (x right, y up) are mapped into a band
+        of a fixed pixel width between a title strip and a legend strip, so line widths and fonts
+        look the same for any scene size. Every number is written with two decimals in the classic
+        locale, so the same picture is the same bytes. Shared by the picture writers of both
+        libraries. The canvas only maps and formats; the caller owns the stream and writes the
+        elements in drawing order, header first and footer last. */
     class SvgCanvas
     {
     public:
@@ -24,42 +26,48 @@ namespace ompl_core
             double legendPx{36.0};  ///< strip below the drawing
         };
 
-        /** Maps world, which must not be empty, onto the layout's width.
-            @throws ompl::Exception for an empty or degenerate world box. */
+        /** Maps world (metres), which must not be empty, onto the layout's width; the height
+            follows from the world's aspect ratio.
+            @throws ompl::Exception for an empty world box or one of zero width. */
         SvgCanvas(const Eigen::AlignedBox2d &world, const Layout &layout);
 
+        /** Width of the whole picture, pixels. */
         double width() const { return layout_.widthPx; }
         /** Height of the whole picture, pixels. */
         double height() const { return height_; }
         /** Pixels per metre. */
         double scale() const { return scale_; }
+        /** The strips the canvas was made with. */
         const Layout &layout() const { return layout_; }
 
-        /** The pixel position of a world point (y down). */
+        /** The pixel position of a world point (metres); pixel y grows downwards. */
         Eigen::Vector2d map(const Eigen::Vector2d &world) const;
 
         /** "x,y x,y …": the pixel positions of world points. */
         std::string pointList(const std::vector<Eigen::Vector2d> &world) const;
 
-        /** Opens the picture: the XML declaration, <svg> with size and viewBox, defs (verbatim, may
-            be empty) and a white background. */
+        /** Opens the picture: the XML declaration, the `<svg>` element with size and viewBox, defs
+            (verbatim inside `<defs>`, left out when empty) and a white background. */
         void writeHeader(std::ostream &out, const std::string &defs) const;
 
-        /** Closes the picture. */
+        /** Closes the picture (`</svg>`). */
         static void writeFooter(std::ostream &out);
 
-        /** A <polygon> or <polyline> through world points; attributes and content verbatim. */
+        /** A closed `<polygon>` through world points; attributes and content verbatim. */
         void writePolygon(std::ostream &out, const std::vector<Eigen::Vector2d> &world,
                           const std::string &attributes, const std::string &content = "") const;
+        /** An open `<polyline>` through world points; attributes and content verbatim. */
         void writePolyline(std::ostream &out, const std::vector<Eigen::Vector2d> &world,
                            const std::string &attributes, const std::string &content = "") const;
 
-        /** Elements at pixel positions (for symbols, labels and legends). */
+        /** A `<circle>` at a pixel position with a radius in pixels (for symbols, labels and
+            legends); attributes and content verbatim. */
         static void writeCircle(std::ostream &out, const Eigen::Vector2d &centre, double radius,
                                 const std::string &attributes, const std::string &content = "");
+        /** A `<line>` between two pixel positions; attributes verbatim. */
         static void writeLine(std::ostream &out, const Eigen::Vector2d &a, const Eigen::Vector2d &b,
                               const std::string &attributes);
-        /** text is escaped. */
+        /** A `<text>` at a pixel position; text is escaped, attributes are verbatim. */
         static void writeText(std::ostream &out, const Eigen::Vector2d &at, const std::string &text,
                               const std::string &attributes);
 

@@ -5,9 +5,11 @@
 
 namespace ompl_core
 {
-    /** text as a JSON string literal, quotes included, with ", \ and control characters escaped. */
+    /** text as a JSON string literal, quotes included, with `"`, `\` and control characters escaped
+        (the latter as `\u00XX`). Other bytes, UTF-8 included, pass unchanged. */
     std::string jsonQuoted(const std::string &text);
 
-    /** text with XML's special characters as entities (&amp; &lt; &gt; &quot; &apos;). */
+    /** text with `&`, `<`, `>`, `"` and the apostrophe replaced by XML's entities (amp, lt, gt, quot,
+        apos), for attribute values and element text. */
     std::string xmlEscaped(const std::string &text);
 }  // namespace ompl_core

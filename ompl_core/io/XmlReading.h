@@ -1,7 +1,6 @@
-/* Reading values from the elements of an XML file so that every error names file:line: allowed
-   attributes and children, finite numbers, angles with an optional "deg" suffix, fixed-length
-   vectors, "*" (don't care) coordinates, names used once. Shared by the scene loaders of both
-   libraries; knows nothing of what the elements mean. */
+/* Reading XML input files so that every error names file:line: numbers and angles, the XmlElement
+   view, and the checks the scene loaders of both libraries share (the root, names used once,
+   children by tag). Knows nothing of what the elements mean. */
 #pragma once
 
 #include "ompl_core/io/SourceLocation.h"
@@ -32,24 +31,32 @@ namespace ompl_core
         Independent of the C locale. */
     std::optional<double> parseNumber(std::string_view token);
 
-    /** A number in radians, or in degrees when followed by "deg" ("90deg"), converted to radians. */
+    /** A number in radians, or in degrees when followed by "deg" ("90deg"), converted to radians;
+        nothing when malformed or not finite. */
     std::optional<double> parseAngle(std::string_view token);
 
-    /** A readable description of a tinyxml2 syntax error, e.g. "end tag missing or mismatched for <a>". */
+    /** A readable description of a tinyxml2 syntax error (errorId is a tinyxml2::XMLError, errorStr
+        its ErrorStr()), such as "end tag missing or mismatched for <a>". */
     std::string describeXmlError(int errorId, const std::string &errorStr);
 
-    /** One element of an XML document with the file it came from, for located errors.
-        A cheap, copyable view: the document must outlive it. All readers throw InputError naming
-        the file and the line of the element or attribute. */
+    /** One element of an XML file, with the file it came from, for reading values whose errors name
+        file:line: allowed attributes and children, finite numbers, angles with an optional "deg"
+        suffix, fixed-length vectors, "*" (don't care) coordinates.
+
+        A cheap, copyable view: the tinyxml2 document must outlive it and every element it hands
+        out. All readers throw InputError naming the file and the line of the element or
+        attribute. */
     class XmlElement
     {
     public:
+        /** Views element, which file names in messages.
+            @pre element is not null and its document outlives this view. */
         XmlElement(const tinyxml2::XMLElement *element, std::string file);
 
-        /** The element's tag name, e.g. "box". */
+        /** The element's tag name, such as "box". */
         std::string name() const;
 
-        /** The tag in angle brackets for messages, e.g. "<box>". */
+        /** The tag in angle brackets for messages, such as "<box>". */
         std::string tag() const;
 
         /** File and line of the element's start tag. */
@@ -64,7 +71,7 @@ namespace ompl_core
         /** @throws InputError at the attribute's line with message. */
         [[noreturn]] void fail(const char *attribute, const std::string &message) const;
 
-        /** @throws InputError for the first attribute not in allowed. */
+        /** @throws InputError for the first attribute not in allowed, listing the allowed ones. */
         void checkAttributes(std::initializer_list<const char *> allowed) const;
 
         /** All attributes in document order, as (name, value). */
@@ -77,52 +84,66 @@ namespace ompl_core
         /** Child elements in document order, any names. @throws InputError for non-blank text. */
         std::vector<XmlElement> children() const;
 
+        /** Whether the attribute is present (even when empty). */
         bool has(const char *attribute) const;
 
         /** The attribute's text. @throws InputError when it is missing or empty. */
         std::string text(const char *attribute) const;
+        /** The attribute's text, or fallback when absent. @throws InputError when present but empty. */
         std::string text(const char *attribute, const std::string &fallback) const;
 
-        /** One finite number. @throws InputError when missing (first form) or malformed. */
+        /** One finite number. @throws InputError when missing or malformed. */
         double number(const char *attribute) const;
+        /** One finite number, or fallback when absent. @throws InputError when malformed. */
         double number(const char *attribute, double fallback) const;
 
-        /** One number > 0. */
+        /** One number > 0. @throws InputError when missing, malformed or not positive. */
         double positive(const char *attribute) const;
 
-        /** One number >= 0, or fallback when absent. */
+        /** One number >= 0, or fallback when absent. @throws InputError when malformed or negative. */
         double nonNegative(const char *attribute, double fallback) const;
 
-        /** One number in [low, high], or fallback when absent. */
+        /** One number in [low, high], or fallback when absent.
+            @throws InputError when malformed or out of range. */
         double inRange(const char *attribute, double low, double high, double fallback) const;
 
-        /** One whole number in [low, high] (written as a decimal number), or fallback when absent. */
+        /** One whole number in [low, high] (written as a decimal number), or fallback when absent.
+            @throws InputError when malformed, not whole or out of range. */
         unsigned int count(const char *attribute, unsigned int low, unsigned int high,
                            unsigned int fallback) const;
 
-        /** One angle >= 0 (radians, or degrees with "deg"), or fallback when absent. */
+        /** One angle >= 0 (radians, or degrees with "deg"), or fallback when absent; in radians.
+            @throws InputError when malformed or negative. */
         double nonNegativeAngle(const char *attribute, double fallback) const;
 
-        /** One angle (radians, or degrees with "deg"), or fallback when absent. */
+        /** One angle (radians, or degrees with "deg"), or fallback when absent; in radians.
+            @throws InputError when malformed. */
         double angle(const char *attribute, double fallback) const;
 
-        /** One angle or "*" (nullopt), or fallback when absent. */
+        /** One angle in radians or "*" (nullopt), or fallback when absent.
+            @throws InputError when malformed. */
         OptionalNumber angleOrAny(const char *attribute, OptionalNumber fallback) const;
 
-        /** Whitespace-separated finite numbers; count 0 means any count >= 1. */
+        /** Whitespace-separated finite numbers; count 0 means any count >= 1.
+            @throws InputError when missing, malformed or of the wrong count. */
         std::vector<double> numbers(const char *attribute, std::size_t count) const;
 
         /** As numbers(), each entry may also be "*" (nullopt). */
         std::vector<OptionalNumber> coordinates(const char *attribute, std::size_t count) const;
 
+        /** Two finite numbers. @throws InputError when missing, malformed or of the wrong count. */
         Eigen::Vector2d vector2(const char *attribute) const;
+        /** Three finite numbers. @throws InputError when missing, malformed or of the wrong count. */
         Eigen::Vector3d vector3(const char *attribute) const;
+        /** Three finite numbers, or fallback when absent.
+            @throws InputError when malformed or of the wrong count. */
         Eigen::Vector3d vector3(const char *attribute, const Eigen::Vector3d &fallback) const;
 
-        /** Three numbers, each > 0. */
+        /** Three numbers, each > 0. @throws InputError when missing, malformed or not all positive. */
         Eigen::Vector3d positiveVector3(const char *attribute) const;
 
-        /** Three angles (radians, or degrees with "deg"), or fallback when absent. */
+        /** Three angles (radians, or degrees with "deg"), or fallback when absent; in radians.
+            @throws InputError when malformed or of the wrong count. */
         Eigen::Vector3d angles3(const char *attribute, const Eigen::Vector3d &fallback) const;
 
     private:
@@ -144,8 +165,10 @@ namespace ompl_core
         @throws InputError "path: <what> not found" (or a directory, or unreadable). */
     std::string readInputFile(const std::string &path, const std::string &what);
 
-    /** Parses xml into document and returns its only root element, which must be <rootName>.
-        @throws InputError naming sourceName and the line of a syntax error or a wrong root. */
+    /** Parses xml into document and returns its only root element, which must be the element
+        called rootName. The returned view points into document, which must outlive it.
+        @throws InputError naming sourceName and the line of a syntax error, a missing or second
+        root element, or a wrong root. */
     XmlElement parseRootElement(tinyxml2::XMLDocument &document, const std::string &xml,
                                 const std::string &sourceName, const char *rootName);
 
@@ -157,7 +180,7 @@ namespace ompl_core
     void claimName(FirstUses &uses, const XmlElement &element, const std::string &name,
                    const std::string &message);
 
-    /** Records that child appears in parent. @throws InputError when it appeared before. */
+    /** Records that child appears in parent. @throws InputError when its tag appeared before. */
     void claimOnce(FirstUses &uses, const XmlElement &child, const XmlElement &parent);
 
     /** The children of parent grouped by tag, in document order within each tag. Tags not in
@@ -167,9 +190,12 @@ namespace ompl_core
         const XmlElement &parent, std::initializer_list<const char *> allowed,
         std::initializer_list<const char *> repeatable, std::initializer_list<const char *> required);
 
-    /** Checks an element that carries only the given attributes and no children. */
+    /** Checks an element that carries only the given attributes and no children.
+        @throws InputError for another attribute, a child element or non-blank text. */
     void checkLeaf(const XmlElement &element, std::initializer_list<const char *> attributes);
 
-    /** Reads <origin xyz rpy>: rpy as in URDF, R = Rz(yaw) Ry(pitch) Rx(roll). */
+    /** Reads an origin element's xyz (metres, default 0 0 0) and rpy (radians or "deg", default
+        0 0 0) into a pose: rpy as in URDF, R = Rz(yaw) Ry(pitch) Rx(roll).
+        @throws InputError for other attributes, children or malformed values. */
     Eigen::Isometry3d readOrigin(const XmlElement &element);
 }  // namespace ompl_core

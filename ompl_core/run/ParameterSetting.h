@@ -1,6 +1,3 @@
-/* Planner parameters set by a user, from a scene file or the command line, applied through OMPL's
-   ParamSet: the one way by which any declared parameter of any planner is set, with errors that
-   name where the setting came from. */
 #pragma once
 
 #include "ompl_core/io/SourceLocation.h"
@@ -12,7 +9,10 @@
 
 namespace ompl_core
 {
-    /** One parameter value as the user wrote it. */
+    /** One planner parameter value as the user wrote it, in a scene file or on the command line.
+        Settings are applied through OMPL's ParamSet (applyParameters()): the one way by which any
+        declared parameter of any planner is set, with errors that name where the setting came
+        from. */
     struct ParameterSetting
     {
         std::string name;      ///< a parameter declared by the planner (OMPL's declareParam)
@@ -20,15 +20,17 @@ namespace ompl_core
         SourceLocation where;  ///< the scene file line, or {"command line option --param", 0}
     };
 
-    /** Reads "NAME=VALUE" given to the command-line option --param.
+    /** Reads "NAME=VALUE" given to the command-line option --param; the value may be empty or hold
+        further '='.
         @throws InputError when there is no '=' or the name is empty. */
     ParameterSetting parseParameterOption(const std::string &text);
 
     /** Sets each parameter on planner, in order (later settings win).
         @throws InputError naming a setting's place for an unknown name (listing the planner's
-        parameters) or a value the planner rejects. */
+        parameters) or a value the planner rejects (with the parameter's range when it has one). */
     void applyParameters(ompl::base::Planner &planner, const std::vector<ParameterSetting> &settings);
 
-    /** The planner's declared parameters as "name (range)" in name order, for help texts. */
+    /** The planner's declared parameters as "name = value (range)" in name order, with their
+        current values, for help texts; the range is left out when the planner suggests none. */
     std::vector<std::string> describeParameters(const ompl::base::Planner &planner);
 }  // namespace ompl_core

@@ -1,6 +1,3 @@
-/* Planners by name: each library registers the planners that can plan on its setups, and the
-   apps, the benchmark tool and user code pick one by name. A user's own planner joins with one
-   add() call. */
 #pragma once
 
 #include "ompl_core/io/InputError.h"
@@ -15,15 +12,21 @@
 
 namespace ompl_core
 {
-    /** Setup is the setup type the factories build planners for (e.g. ompl_phys::PhysicsSetup). */
+    /** Planners by name: each library registers the planners that can plan on its setups, and the
+        apps, the benchmark tool and user code pick one by name. A user's own planner joins with one
+        add() call. Not synchronised: add planners before other threads use the registry.
+        @tparam Setup the setup type the factories build planners for (ompl_phys::PhysicsSetup, for
+        instance). */
     template <typename Setup>
     class PlannerRegistry
     {
     public:
-        /** Makes a planner for a setup; may also configure the setup (e.g. an objective). */
+        /** Makes a new planner for a setup; may also configure the setup (an optimisation
+            objective, for instance). */
         using Factory = std::function<ompl::base::PlannerPtr(Setup &)>;
 
-        /** Registers a planner; description is one line for help texts.
+        /** Registers a planner; description is one line for help texts. The registry keeps a copy
+            of factory.
             @throws ompl::Exception when name is empty or already registered. */
         void add(const std::string &name, const std::string &description, Factory factory)
         {
@@ -32,6 +35,7 @@ namespace ompl_core
             entries_.push_back({name, description, std::move(factory)});
         }
 
+        /** Whether a planner of that name is registered (names are case-sensitive). */
         bool has(const std::string &name) const { return find(name) != entries_.end(); }
 
         /** Names in registration order. */
@@ -52,6 +56,7 @@ namespace ompl_core
             return list;
         }
 
+        /** The one-line description given to add(). @throws InputError for an unknown name. */
         const std::string &description(const std::string &name) const { return entry(name).description; }
 
         /** A new planner of that name for setup. @throws InputError for an unknown name. */

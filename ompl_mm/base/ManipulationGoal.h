@@ -1,7 +1,3 @@
-/* The goal of a manipulation problem: targets for some robot joints and some object
-   coordinates, every other coordinate "don't care", and every object resting on a surface.
-   Besides testing states, it completes partial samples into goal states (MOPL's PROJSAMP),
-   which is how the backward tree gets its roots lazily. */
 #pragma once
 
 #include "ompl_mm/base/PartialState.h"
@@ -11,25 +7,36 @@
 
 namespace ompl_mm
 {
+    /** The goal of a manipulation problem: targets for some robot joints and some object
+        coordinates, every other coordinate "don't care", and every object resting on a surface.
+        Besides testing states, it completes partial samples into goal states (MOPL's PROJSAMP),
+        which is how the backward tree gets its roots lazily. */
     class ManipulationGoal : public ompl::base::GoalRegion
     {
     public:
-        /** Reads the targets from the model's scene.
-            @throws ompl_core::InputError naming the scene line when a target is impossible: wrong number of
-            joints, a joint target outside its limits, or an object target on no support surface. */
+        /** Reads the targets from the model's scene; sets the threshold to 0.
+            @pre si's state space is a ManipulationStateSpace.
+            @throws ompl_core::InputError naming the scene line when a target is impossible: wrong number
+            of joints, a joint target outside its limits, an unknown object, or an object target on no
+            support surface. */
         explicit ManipulationGoal(const ompl::base::SpaceInformationPtr &si);
 
-        /** Largest amount by which a defined coordinate misses its tolerance (0 inside the goal),
-            plus 1 for every object that rests on no surface. */
+        /** OMPL's hook: largest amount by which a defined coordinate misses its tolerance (metres or
+            radians, 0 inside the goal), plus 1 for every object that rests on no surface; infinity
+            for a state with a non-finite value. */
         double distanceGoal(const ompl::base::State *state) const override;
 
-        /** True when every defined coordinate is within its tolerance and all objects rest
-            (distanceGoal() is 0; the inherited threshold is not used). */
+        /** OMPL's hook: true when every defined coordinate is within its tolerance and all objects
+            rest (distanceGoal() is 0; the inherited threshold is not used). */
         bool isSatisfied(const ompl::base::State *state) const override;
+        /** OMPL's hook: as isSatisfied(state), also writing distanceGoal() to *distance when
+            distance is not null. */
         bool isSatisfied(const ompl::base::State *state, double *distance) const override;
 
-        /** A goal state nearest to the sample (PROJSAMP): goal coordinates where defined, else the
-            sample's defined parts, else random values (objects on a random surface).
+        /** A goal state nearest to the sample (PROJSAMP), written to out: goal coordinates where
+            defined, else the sample's defined parts (an object's only when it rests), else random
+            values (joints within their limits; objects on a random surface their goal allows, with
+            their start yaw).
             @pre sample's undefined parts may hold anything. */
         void complete(const PartialState &sample, ompl::base::State *out, ompl::RNG &rng) const;
 
@@ -38,6 +45,7 @@ namespace ompl_mm
         /** True when the goal defines at least one robot joint. */
         bool constrainsRobot() const;
 
+        /** OMPL's hook: names what the goal constrains (robot joints, objects) on one line. */
         void print(std::ostream &out) const override;
 
     private:

@@ -1,10 +1,3 @@
-/* MOPL's distance ("mini empty-space planner with penalties"): an estimate of how far the robot
-   must travel to turn one configuration into another. It adds to the robot's own distance, for
-   every object that must move, a penalty and the object's displacement, plus the legs the tool
-   travels to reach each object (visited greedily, nearest first) and back to its target.
-   Rickert, Sieverling, Brock, "Balancing exploration and exploitation in sampling-based motion
-   planning", IEEE T-RO 2014 / Saoji et al., MOPL (2015), section III-B.3. Directed: d(a, b) is
-   the cost of going from a to b. */
 #pragma once
 
 #include "ompl_mm/base/PartialState.h"
@@ -21,13 +14,21 @@ namespace ompl_mm
         kinematics is the expensive part). */
     struct MetricPoint
     {
-        std::vector<double> joints;
-        Eigen::Vector3d tool{Eigen::Vector3d::Zero()};
-        Eigen::Quaterniond toolRotation{Eigen::Quaterniond::Identity()};
-        std::vector<Eigen::Vector3d> objects;  ///< base centres
-        std::vector<double> yaws;
+        std::vector<double> joints;                                       ///< metres or radians
+        Eigen::Vector3d tool{Eigen::Vector3d::Zero()};                    ///< tool point in the world, metres
+        Eigen::Quaterniond toolRotation{Eigen::Quaterniond::Identity()};  ///< tool frame's world rotation
+        std::vector<Eigen::Vector3d> objects;  ///< base centres in the world, metres
+        std::vector<double> yaws;              ///< object rotations about world z, radians
     };
 
+    /** MOPL's distance ("mini empty-space planner with penalties"): an estimate of how far the
+        robot must travel to turn one configuration into another. It adds to the robot's own
+        distance, for every object that must move, a penalty and the object's displacement, plus
+        the legs the tool travels to reach each object (visited greedily, nearest first) and back
+        to its target. Rickert, Sieverling, Brock, "Balancing exploration and exploitation in
+        sampling-based motion planning", IEEE T-RO 2014 / Jentzsch et al., MOPL (IROS 2015),
+        section III-B.3. Directed: d(a, b) is the cost of going from a to b. Keeps a pointer to its
+        space, which must outlive it. */
     class ManipulationMetric
     {
     public:
@@ -58,7 +59,9 @@ namespace ompl_mm
             @throws ompl::Exception when the space has more than MAX_OBJECTS objects. */
         explicit ManipulationMetric(const ManipulationStateSpace *space);
 
+        /** The weights in use, to change; changes count from the next distance. */
         Weights &weights() { return weights_; }
+        /** The weights in use. */
         const Weights &weights() const { return weights_; }
 
         /** Computes the cached quantities of a fully defined state. */
@@ -71,14 +74,15 @@ namespace ompl_mm
             undefined parts take each vertex's values. */
         struct Query
         {
-            MetricPoint point;
+            MetricPoint point;                  ///< the sample's quantities (undefined parts hold anything)
             std::vector<double> toolToObjects;  ///< squared distances from point.tool to point.objects
-            std::vector<char> objectDefined;
-            bool robotDefined{true};
+            std::vector<char> objectDefined;    ///< per object: nonzero when the sample defines it
+            bool robotDefined{true};            ///< the sample defines the robot's joints
             bool sampleIsTarget{true};  ///< the sample is `to` (forward tree) or `from` (backward tree)
         };
 
-        /** Fills query from a partial sample. */
+        /** Fills query from a partial sample; sampleIsTarget says whether the sample is `to`
+            (forward tree) or `from` (backward tree) of the distances. */
         void makeQuery(const PartialState &sample, bool sampleIsTarget, Query &query) const;
 
         /** What all vertices with the same objects share in their distance to a query: which
@@ -86,8 +90,10 @@ namespace ompl_mm
         struct ObjectCost
         {
             std::uint64_t moving{0};  ///< bit i: object i must move
-            double bound{0.0};
+            double bound{0.0};        ///< sum of the moving objects' penalties and displacements, metres
         };
+        /** The ObjectCost of vertices whose objects are those of `objects` against query: an object
+            must move when the query defines it and its pose differs (beyond 1e-9). */
         ObjectCost objectCost(const MetricPoint &objects, const Query &query) const;
 
         /** A lower bound of the robot term for robots whose joints lie at least jointDistance and
@@ -133,9 +139,9 @@ namespace ompl_mm
             visit is planned on first use. */
         struct LegPlan
         {
-            std::uint64_t planned{0};  ///< bit i: the visit starting at object i is planned
-            std::vector<double> legsAfter;
-            std::vector<int> last;
+            std::uint64_t planned{0};       ///< bit i: the visit starting at object i is planned
+            std::vector<double> legsAfter;  ///< per first object i: cost of the legs after it
+            std::vector<int> last;          ///< per first object i: the object visited last
         };
 
         /** As distance() for a vertex packed (packVertex) with `objects`; plan (planned = 0 for

@@ -1,7 +1,3 @@
-/* The configuration space of a manipulation problem: the robot's joints times one upright pose
-   (x, y, z, yaw) per movable object. Interpolation is mode-aware: an object held by the robot
-   (resting on no surface at either end of a motion) moves with the tool frame, so any two
-   consecutive waypoints of a manipulation path interpolate the way the primitive moved them. */
 #pragma once
 
 #include "ompl_mm/model/ManipulationModel.h"
@@ -12,27 +8,43 @@
 
 namespace ompl_mm
 {
-    /** A CompoundStateSpace with subspaces "robot" (RealVector, one dimension per moving joint),
-        then per object "<name>_position" (RealVector 3: base centre) and "<name>_yaw" (SO2).
-        Object position bounds enclose all support surfaces and sampling regions.
-        Not copyable (OMPL state spaces are shared through pointers). */
+    /** The configuration space of a manipulation problem: the robot's joints times one upright pose
+        (x, y, z, yaw) per movable object. A CompoundStateSpace with subspaces "robot" (RealVector,
+        one dimension per moving joint, bounded by the joint limits), then per object
+        "NAME_position" (RealVector 3: base centre in the world, metres) and "NAME_yaw" (SO2,
+        radians). Object position bounds enclose all support surfaces and sampling regions.
+        Interpolation is mode-aware: an object held by the robot (resting on no surface at either
+        end of a motion) moves with the tool frame, so any two consecutive waypoints of a
+        manipulation path interpolate the way the primitive moved them. Not copyable (OMPL state
+        spaces are shared through pointers). */
     class ManipulationStateSpace : public ompl::base::CompoundStateSpace
     {
     public:
+        /** The state type: a compound state of the subspaces above. */
         using StateType = ompl::base::CompoundStateSpace::StateType;
 
+        /** Builds and locks the subspaces for the model's robot and objects; shares the model. */
         explicit ManipulationStateSpace(ManipulationModelPtr model);
 
+        /** The problem this space describes. */
         const ManipulationModelPtr &model() const { return model_; }
+        /** Number of movable objects. */
         unsigned int objectCount() const { return model_->objectCount(); }
+        /** Number of robot coordinates (moving joints). */
         unsigned int robotDimension() const { return model_->dof(); }
 
+        /** The robot's joint values in state (robotDimension() of them), writable. */
         double *robotValues(ompl::base::State *state) const;
+        /** The robot's joint values in state (robotDimension() of them). */
         const double *robotValues(const ompl::base::State *state) const;
 
+        /** The object's base centre in the world, metres. */
         Eigen::Vector3d objectPosition(const ompl::base::State *state, unsigned int object) const;
+        /** The object's rotation about world z, radians. */
         double objectYaw(const ompl::base::State *state, unsigned int object) const;
+        /** The object's pose (base centre and yaw). */
         ObjectPose objectPose(const ompl::base::State *state, unsigned int object) const;
+        /** Sets the object's pose; the yaw is wrapped into [-pi, pi). */
         void setObjectPose(ompl::base::State *state, unsigned int object, const ObjectPose &pose) const;
 
         /** Copies the object's pose from source to destination. */
@@ -51,7 +63,7 @@ namespace ompl_mm
         /** Support surface the object rests on in this state, or -1 when held. */
         int restingSurface(const ompl::base::State *state, unsigned int object) const;
 
-        /** World position of the tool point. */
+        /** World position of the tool point, metres. */
         Eigen::Vector3d toolPosition(const ompl::base::State *state) const;
 
         /** Sets every subspace's resolution so that motion checks step at most `step` in each
@@ -59,8 +71,12 @@ namespace ompl_mm
             sets the space up again so that the new resolution is in force at once. */
         void setCollisionResolution(double step);
 
+        /** OMPL's hook: the state a fraction t of the way from `from` to `to`. Objects carried at
+            either end move with the tool (their grasp interpolated between the ends' grasps), the
+            rest interpolate per subspace. state may be from or to. */
         void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t,
                          ompl::base::State *state) const override;
+        /** OMPL's hook: prints the joints and each object's name, position and yaw on one line. */
         void printState(const ompl::base::State *state, std::ostream &out) const override;
 
     private:
@@ -74,5 +90,6 @@ namespace ompl_mm
         ManipulationModelPtr model_;
     };
 
+    /** Shared ownership of a ManipulationStateSpace, as OMPL passes state spaces around. */
     using ManipulationStateSpacePtr = std::shared_ptr<ManipulationStateSpace>;
 }  // namespace ompl_mm

@@ -1,6 +1,3 @@
-/* A partially defined configuration, as MOPL samples them: each part (the robot, or one
-   object) is either defined or "don't care". Undefined parts are resolved later by copying them
-   from the nearest tree vertex (or, for goal roots, by ManipulationGoal::complete). */
 #pragma once
 
 #include "ompl_mm/base/ManipulationStateSpace.h"
@@ -9,25 +6,39 @@
 
 namespace ompl_mm
 {
-    /** Owns its state. Part 0 is the robot, part 1 + i is object i. Not copyable. */
+    /** A partially defined configuration, as MOPL samples them: each part (the robot, or one
+        object) is either defined or "don't care". Undefined parts are resolved later by copying
+        them from the nearest tree vertex (or, for goal roots, by ManipulationGoal::complete).
+        Owns its state. Part 0 is the robot, part 1 + i is object i. Not copyable. */
     class PartialState
     {
     public:
+        /** Allocates a state of space with every part defined.
+            @pre space outlives this object. */
         explicit PartialState(const ManipulationStateSpace *space);
+        /** Frees the state. */
         ~PartialState();
-        PartialState(const PartialState &) = delete;
-        PartialState &operator=(const PartialState &) = delete;
+        PartialState(const PartialState &) = delete;             ///< not copyable
+        PartialState &operator=(const PartialState &) = delete;  ///< not copyable
 
+        /** The values; undefined parts may hold anything. */
         ompl::base::State *state() { return state_; }
+        /** The values; undefined parts may hold anything. */
         const ompl::base::State *state() const { return state_; }
 
+        /** True when the robot's joints are defined. */
         bool robotDefined() const { return defined_[0] != 0; }
+        /** True when the object's pose is defined. */
         bool objectDefined(unsigned int object) const { return defined_[1 + object] != 0; }
+        /** Marks the robot's joints defined or "don't care". */
         void setRobotDefined(bool defined) { defined_[0] = defined; }
+        /** Marks the object's pose defined or "don't care". */
         void setObjectDefined(unsigned int object, bool defined) { defined_[1 + object] = defined; }
+        /** Marks every part defined. */
         void defineAll();
 
-        /** Writes into out the defined parts of this state and the other parts of fill. */
+        /** Writes into out the defined parts of this state and the other parts of fill; out may be
+            state(). */
         void complete(const ompl::base::State *fill, ompl::base::State *out) const;
 
     private:

@@ -1,8 +1,3 @@
-/* Collision checking of one manipulation configuration with FCL: robot links, movable objects
-   and the fixed obstacles (in a broad-phase tree). It applies the contact rules of the state-based
-   validity: a held object may touch the gripper (the tool link and the links below it), a resting
-   object may touch the obstacle its surface belongs to, listed robot link pairs are ignored, and
-   adjacent links never collide with each other. */
 #pragma once
 
 #include "ompl_mm/model/ManipulationModel.h"
@@ -15,10 +10,16 @@
 
 namespace ompl_mm
 {
-    /** Makes the FCL geometry of a shape (cylinders along z, centred). */
+    /** Makes the FCL geometry of a shape (cylinders along z, centred); the caller shares its
+        ownership. @throws ompl::Exception for a shape kind outside Shape::Kind. */
     std::shared_ptr<fcl::CollisionGeometryd> makeCollisionGeometry(const Shape &shape);
 
-    /** Not thread-safe: queries move the bodies. Not copyable (FCL objects hold raw pointers). */
+    /** Collision checking of one manipulation configuration with FCL: robot links, movable
+        objects and the fixed obstacles (in a broad-phase tree). It applies the contact rules of the
+        state-based validity: a held object may touch the gripper (the tool link and the links below
+        it), a resting object may touch the obstacle its surface belongs to, listed robot link pairs
+        are ignored, and adjacent links never collide with each other. Not thread-safe: queries move
+        the bodies. Not copyable (FCL objects hold raw pointers). */
     class CollisionWorld
     {
     public:
@@ -26,18 +27,23 @@ namespace ompl_mm
             (-1 = held by the robot). */
         struct Configuration
         {
-            const double *joints{nullptr};
-            const std::vector<ObjectPose> *objects{nullptr};
-            const std::vector<int> *restingSurfaces{nullptr};
+            const double *joints{nullptr};                     ///< one value per moving joint
+            const std::vector<ObjectPose> *objects{nullptr};   ///< one pose per object, world frame
+            const std::vector<int> *restingSurfaces{nullptr};  ///< per object, its surface index or -1
         };
 
+        /** Builds the bodies of the model's robot, objects and obstacles; shares the model.
+            @throws ompl_core::InputError when a surface names an unknown obstacle or an allowed
+            collision pair names an unknown link. */
         explicit CollisionWorld(ManipulationModelPtr model);
+        /** Frees the FCL bodies. */
         ~CollisionWorld();
-        CollisionWorld(const CollisionWorld &) = delete;
-        CollisionWorld &operator=(const CollisionWorld &) = delete;
+        CollisionWorld(const CollisionWorld &) = delete;             ///< not copyable
+        CollisionWorld &operator=(const CollisionWorld &) = delete;  ///< not copyable
 
         /** True when nothing collides. When it returns false and contact is given, contact names
-            the first colliding pair ("robot link 'a'", "object 'b'", "obstacle 'c'"). */
+            the first colliding pair ("robot link 'a'", "object 'b'", "obstacle 'c'").
+            @pre the configuration's pointers are set and sized for the model. */
         bool isCollisionFree(const Configuration &configuration, std::string *contact = nullptr) const;
 
     private:

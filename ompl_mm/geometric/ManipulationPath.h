@@ -1,9 +1,3 @@
-/* A manipulation plan as an OMPL geometric path: the waypoints, plus one label per segment
-   saying which primitive moved which object. Consecutive waypoints interpolate with the
-   manipulation state space, so PathGeometric::check() and OMPL's benchmark re-check it as is.
-   Operations inherited from PathGeometric that insert or remove states (interpolate, subdivide,
-   reverse, append, keepAfter/Before, random perturbations) do not update the labels; use the
-   label-aware members here instead. */
 #pragma once
 
 #include "ompl_mm/primitives/Trajectory.h"
@@ -16,18 +10,29 @@
 
 namespace ompl_mm
 {
+    /** A manipulation plan as an OMPL geometric path: the waypoints, plus one label per segment
+        saying which primitive moved which object. Consecutive waypoints interpolate with the
+        manipulation state space, so PathGeometric::check() and OMPL's benchmark re-check it as is.
+        Operations inherited from PathGeometric that insert or remove states (interpolate,
+        subdivide, reverse, append, keepAfter/Before, random perturbations) do not update the
+        labels; use the label-aware members here instead. Owns copies of its states, as
+        PathGeometric does. */
     class ManipulationPath : public ompl::geometric::PathGeometric
     {
     public:
+        /** An empty path. @pre si's state space is a ManipulationStateSpace. */
         explicit ManipulationPath(const ompl::base::SpaceInformationPtr &si);
 
-        /** Appends a state reached from the last one by a labelled segment (no label for the first). */
+        /** Appends a copy of a state reached from the last one by a labelled segment.
+            @throws ompl::Exception when the path is empty (the first state has no label: use
+            appendFirst()). */
         void appendLabelled(const ompl::base::State *state, SegmentLabel label);
-        /** Appends the first state. @pre the path is empty. */
+        /** Appends a copy of the first state. @throws ompl::Exception when the path has states. */
         void appendFirst(const ompl::base::State *state);
 
         /** Label of the segment from state i to state i + 1. */
         const SegmentLabel &label(std::size_t i) const { return labels_[i]; }
+        /** All labels, one per segment (getStateCount() - 1 of them for a non-empty path). */
         const std::vector<SegmentLabel> &labels() const { return labels_; }
 
         /** Removes states first + 1 … last − 1; the segment first → last takes first's label.

@@ -1,6 +1,3 @@
-/* The record of one MOPL run on a ManipulationSetup (see docs/user-guide.md for the JSON that
-   ompl_mm_plan writes from it): tree sizes, the planner's statistics, and for solved runs the
-   Cartesian tool-path length, the path's vertices and its primitives by kind. */
 #pragma once
 
 #include "ompl_core/run/RunRecord.h"
@@ -8,7 +5,10 @@
 
 namespace ompl_mm
 {
-    /** The result of the setup's last solve(), which run describes. */
+    /** The record of the setup's last solve(), which run describes (see docs/user-guide.md for the
+        JSON that ompl_mm_plan writes from it): tree sizes, MOPL's statistics when the planner is
+        MOPL, and for solved runs the Cartesian tool-path length (metres), the path's vertices and
+        its primitives by kind. @pre solve() has been called. */
     ompl_core::RunResult manipulationRunResult(const ompl_core::RunDescription &run,
                                                const ManipulationSetup &setup);
 }  // namespace ompl_mm

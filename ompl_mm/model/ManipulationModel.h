@@ -1,7 +1,3 @@
-/* What the planning pieces share about a problem: the robot's kinematics placed in the world,
-   the tool point, the movable objects and the surfaces they rest on. It answers the questions
-   every piece asks of a configuration: where is the tool. Whether an object rests, and on what,
-   is the scene's rule (Scene::restingSurface). */
 #pragma once
 
 #include "ompl_mm/robot/RobotModel.h"
@@ -13,23 +9,36 @@
 namespace ompl_mm
 {
     class ManipulationModel;
+    /** Shared, read-only ownership of a ManipulationModel: every piece that holds one keeps the
+        model alive. */
     using ManipulationModelPtr = std::shared_ptr<const ManipulationModel>;
 
-    /** Immutable after construction; shared by the state space, validity checker, metric and
-        primitives through a ManipulationModelPtr. */
+    /** What the planning pieces share about a problem: the robot's kinematics placed in the world,
+        the tool point, the movable objects and the surfaces they rest on. It answers the question
+        every piece asks of a configuration: where is the tool. Whether an object rests, and on
+        what, is the scene's rule (Scene::restingSurface). Immutable after construction; shared by
+        the state space, validity checker, metric and primitives through a ManipulationModelPtr. */
     class ManipulationModel
     {
     public:
-        /** @throws ompl_core::InputError (naming the scene's <robot> line) when the tool link is unknown. */
+        /** Keeps its own copies of scene and robot.
+            @throws ompl_core::InputError (naming the scene's robot element) when the tool link is
+            unknown. */
         ManipulationModel(Scene scene, RobotModel robot);
 
+        /** The problem, as given to the constructor. */
         const Scene &scene() const { return scene_; }
+        /** The robot's kinematic tree. */
         const RobotModel &robot() const { return robot_; }
+        /** Number of moving joints of the robot. */
         unsigned int dof() const { return robot_.dof(); }
+        /** Number of movable objects. */
         unsigned int objectCount() const { return static_cast<unsigned int>(scene_.objects.size()); }
+        /** Index of the tool link in robot().links(). */
         int toolLink() const { return toolLink_; }
 
-        /** World frame of the tool point for joint values q. */
+        /** World frame of the tool point for joint values q (size dof()): the tool link's frame
+            moved to the scene's tool offset. */
         Eigen::Isometry3d toolFrame(const double *q) const;
 
     private:

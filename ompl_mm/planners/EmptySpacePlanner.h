@@ -1,7 +1,3 @@
-/* The empty-space planner (ESP) of MOPL: chains useful primitives from a start towards a target
-   configuration as if there were no obstacles. Primitives are tried in a shuffled order in
-   passes; a primitive that fails is skipped until another one succeeds; planning stops when a
-   pass finds nothing useful left to try. Collisions are checked by the caller. */
 #pragma once
 
 #include "ompl_mm/primitives/Primitive.h"
@@ -12,9 +8,15 @@
 
 namespace ompl_mm
 {
+    /** The empty-space planner (ESP) of MOPL: chains useful primitives from a start towards a
+        target configuration as if there were no obstacles. Primitives are tried in a shuffled order
+        in passes; a primitive that fails is skipped until another one succeeds; planning stops when
+        a pass finds nothing useful left to try. Collisions are checked by the caller. Shares its
+        primitives; not thread-safe (plan() reuses scratch space). */
     class EmptySpacePlanner
     {
     public:
+        /** How far plan() got. */
         enum class Outcome
         {
             Reached,       ///< the trajectory ends at the target
@@ -26,11 +28,15 @@ namespace ompl_mm
         /** Bound on primitive applications per call, so a cycle of primitives cannot hang it. */
         static constexpr unsigned int MAX_STEPS = 64;
 
+        /** A planner chaining primitives in space. @pre space outlives the planner. */
         EmptySpacePlanner(const ManipulationStateSpace *space, std::vector<PrimitivePtr> primitives);
 
+        /** The primitives it chains. */
         const std::vector<PrimitivePtr> &primitives() const { return primitives_; }
 
-        /** Plans from `from` towards `to`; trajectory is reset to start at from. */
+        /** Plans from `from` towards `to` with at most MAX_STEPS primitive applications, drawing
+            the order of the primitives from rng; trajectory is reset to start at from and holds the
+            waypoints found, whatever the outcome. */
         Outcome plan(const ompl::base::State *from, const ompl::base::State *to, Trajectory &trajectory,
                      ompl::RNG &rng);
 

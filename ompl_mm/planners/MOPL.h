@@ -1,9 +1,3 @@
-/* MOPL, the multi-modal path planner: a bidirectional RRT over robot × object configurations
-   whose extensions chain manipulation primitives through an empty-space planner, whose samples
-   leave parts undefined (resolved by the nearest neighbour), and whose goal tree gets its roots
-   lazily by completing partial goals (PROJSAMP). Solutions are ManipulationPath objects.
-   S. Jentzsch, A. Gaschler, O. Khatib, A. Knoll, "MOPL: A multi-modal path planner for generic
-   manipulation tasks", IEEE/RSJ IROS 2015. */
 #pragma once
 
 #include "ompl_mm/base/ManipulationGoal.h"
@@ -19,29 +13,54 @@
 
 namespace ompl_mm
 {
-    /** Where the planner spent its effort in the last solve() (times in seconds). */
+    /** Where the planner spent its effort (times in seconds). Times, iterations and restarts add
+        up over the solve() calls since the last clear(); the collision query counts are those of
+        the last solve(). */
     struct MOPLStatistics
     {
-        double samplingTime{0.0};   ///< drawing partial samples
-        double nearestTime{0.0};    ///< nearest-neighbour search (including goal completion)
-        double propagateTime{0.0};  ///< empty-space planning (primitives' propagate)
-        double connectTime{0.0};    ///< collision-checked walks along propagated trajectories
-        double smoothingTime{0.0};  ///< shortcutting the solution
-        std::uint64_t iterations{0};
-        std::uint64_t restarts{0};          ///< times the trees were cleared (see MOPL::setRestartIterations)
-        std::uint64_t collisionQueries{0};  ///< state validity queries
+        double samplingTime{0.0};     ///< drawing partial samples (and goal completion for the goal tree)
+        double nearestTime{0.0};      ///< nearest-neighbour search in the trees
+        double propagateTime{0.0};    ///< empty-space planning (primitives' propagate)
+        double connectTime{0.0};      ///< collision-checked walks along propagated trajectories
+        double smoothingTime{0.0};    ///< shortcutting the solution
+        std::uint64_t iterations{0};  ///< iterations of the search loop, one sample each
+        std::uint64_t restarts{0};    ///< times the trees were cleared (see MOPL::setRestartIterations)
+        std::uint64_t collisionQueries{0};      ///< state validity queries (of a ManipulationValidityChecker)
         std::uint64_t freeCollisionQueries{0};  ///< those that found the state valid
     };
 
-    /** Use with a ManipulationStateSpace, a ManipulationValidityChecker and a ManipulationGoal
-        (ManipulationSetup wires them). Requires primitives (setPrimitives) before setup(). */
+    /** MOPL, the multi-modal path planner: a bidirectional RRT over robot × object configurations
+        whose extensions chain manipulation primitives through an empty-space planner, whose samples
+        leave parts undefined (resolved by the nearest neighbour), and whose goal tree gets its
+        roots lazily by completing partial goals (PROJSAMP). Solutions are ManipulationPath objects
+        whose runs of transit segments are shortcut.
+
+        Use with a ManipulationStateSpace, a ManipulationValidityChecker and a ManipulationGoal
+        (ManipulationSetup wires them). Requires primitives (setPrimitives) before setup(). Declared
+        parameters: connect_step, vertex_step, restart_iterations, smoothing_attempts, the metric's
+        weights (robot_weight, joint_weight, tool_weight, rotation_weight, moving_object_penalty,
+        move_to_object_penalty, move_to_object_factor, contact_distance) and the sampler's
+        probabilities (object_sample_probability, undefined_probability, start_value_probability,
+        random_robot_probability, each in [0, 1]).
+
+        @par External documentation
+        S. Jentzsch, A. Gaschler, O. Khatib, A. Knoll, "MOPL: A multi-modal path planner for generic
+        manipulation tasks", IEEE/RSJ International Conference on Intelligent Robots and Systems
+        (IROS), 2015, pp. 6208–6214. DOI 10.1109/IROS.2015.7354263,
+        https://doi.org/10.1109/IROS.2015.7354263 */
     class MOPL : public ompl::base::Planner
     {
     public:
+        /** A planner on si with the given primitives (shared); sets the state space's collision
+            resolution to the default connect step.
+            @throws ompl::Exception when si's state space is not a ManipulationStateSpace. */
         MOPL(const ompl::base::SpaceInformationPtr &si, std::vector<PrimitivePtr> primitives = {});
+        /** Frees the trees and their states. */
         ~MOPL() override;
 
+        /** Replaces the primitives (shared with the caller); the planner must be set up again. */
         void setPrimitives(std::vector<PrimitivePtr> primitives);
+        /** The primitives the empty-space planner chains. */
         const std::vector<PrimitivePtr> &getPrimitives() const { return primitives_; }
 
         /** Seeds this planner's own random numbers, so several planners in one process are each
@@ -49,30 +68,49 @@ namespace ompl_mm
         void setSeed(std::uint_fast32_t seed) { rng_.setLocalSeed(seed); }
 
         /** Collision-check step along propagated motions (metres or radians); 0.05 by default.
-            Also sets the state space's collision resolution (OMPL's motion checks) to the same step. */
+            Also sets the state space's collision resolution (OMPL's motion checks) to the same step.
+            @throws ompl::Exception when step is not positive and finite. */
         void setConnectStep(double step);
+        /** Collision-check step along propagated motions (metres or radians). */
         double getConnectStep() const { return connectStep_; }
-        /** A tree vertex is added every this much motion along an extension; 0.35 by default. */
+        /** A tree vertex is added every this much motion along an extension (metres or radians:
+            the larger of the joint-space distance and any object's displacement); 0.35 by default.
+            @throws ompl::Exception when step is not positive and finite. */
         void setVertexStep(double step);
+        /** Motion between tree vertices along an extension (metres or radians). */
         double getVertexStep() const { return vertexStep_; }
         /** Iterations after which the search starts again from the start state with empty trees;
             each later run may last twice as long, so the planner stays probabilistically
             complete while the heavy tail of its run time is cut. 0 never restarts; 10000 by
             default. */
         void setRestartIterations(unsigned int iterations) { restartIterations_ = iterations; }
+        /** Iterations of the first run before a restart; 0 when the planner never restarts. */
         unsigned int getRestartIterations() const { return restartIterations_; }
         /** Shortcut attempts per run of transit segments of the solution; 100 by default. */
         void setSmoothingAttempts(unsigned int attempts) { smoothingAttempts_ = attempts; }
+        /** Shortcut attempts per run of transit segments of the solution. */
         unsigned int getSmoothingAttempts() const { return smoothingAttempts_; }
 
-        /** The metric's weights (also declared parameters). */
+        /** The metric's weights, to change (also declared parameters). */
         ManipulationMetric::Weights &metricWeights() { return metric_->weights(); }
 
+        /** OMPL's hook: grows the start and goal trees in turn until the start tree reaches the goal
+            or the trees connect (EXACT_SOLUTION, a ManipulationPath added to the problem
+            definition) or ptc ends (TIMEOUT). Returns UNRECOGNIZED_GOAL_TYPE when the goal is not a
+            ManipulationGoal and INVALID_START without a valid start state. A later call goes on
+            with the same trees. */
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+        /** OMPL's hook: empties both trees and resets the statistics. */
         void clear() override;
+        /** OMPL's hook: makes the empty-space planner and empty trees.
+            @throws ompl::Exception without primitives, or when undefined_probability +
+            start_value_probability exceeds 1. */
         void setup() override;
+        /** OMPL's hook: the vertices and edges of both trees (tag 1: start tree, tag 2: goal tree;
+            edges point in the direction of motion) and the statistics as properties. */
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
+        /** Where the planner spent its effort. */
         const MOPLStatistics &statistics() const { return statistics_; }
 
     private:

@@ -1,10 +1,3 @@
-/* One search tree of MOPL: vertices with their parent, the label of the edge to the parent and
-   the cached metric quantities. Nearest-neighbour search is exact for the directed manipulation
-   metric, which no metric tree can index: vertices are grouped by object configuration (a vertex
-   reached by a transit joins its parent's group); a group is skipped whole when a lower bound of
-   its distance (its objects' cost, the robot's distance to the group's bounding boxes of joints
-   and tool points, and the tool's shortest approach and return) reaches the best distance so
-   far, and the rest are scanned with early termination. */
 #pragma once
 
 #include "ompl_mm/base/ManipulationMetric.h"
@@ -15,35 +8,52 @@
 
 namespace ompl_mm
 {
-    /** Owns its states. forward: edges lead away from the roots (start tree); backward: edges
-        lead towards the roots (goal tree), and a vertex's label is that of the edge to its parent. */
+    /** One search tree of MOPL: vertices with their parent, the label of the edge to the parent
+        and the cached metric quantities. Nearest-neighbour search is exact for the directed
+        manipulation metric, which no metric tree can index: vertices are grouped by object
+        configuration (a vertex reached by a transit joins its parent's group); a group is skipped
+        whole when a lower bound of its distance (its objects' cost, the robot's distance to the
+        group's bounding boxes of joints and tool points, and the tool's shortest approach and
+        return) reaches the best distance so far, and the rest are scanned with early termination.
+        Owns its states. forward: edges lead away from the roots (start tree); backward: edges lead
+        towards the roots (goal tree), and a vertex's label is that of the edge to its parent. */
     class ManipulationTree
     {
     public:
+        /** One vertex of the tree. */
         struct Vertex
         {
-            ompl::base::State *state;
-            int parent;          ///< -1 for a root
-            SegmentLabel label;  ///< of the edge between parent and this vertex
-            MetricPoint point;
-            std::size_t group;  ///< index of its object configuration
+            ompl::base::State *state;  ///< owned by the tree
+            int parent;                ///< -1 for a root
+            SegmentLabel label;        ///< of the edge between parent and this vertex
+            MetricPoint point;         ///< the metric's quantities of state
+            std::size_t group;         ///< index of its object configuration
         };
 
+        /** An empty tree. @pre space and metric outlive it. */
         ManipulationTree(const ManipulationStateSpace *space, const ManipulationMetric *metric, bool forward);
+        /** Frees the states. */
         ~ManipulationTree();
-        ManipulationTree(const ManipulationTree &) = delete;
-        ManipulationTree &operator=(const ManipulationTree &) = delete;
+        ManipulationTree(const ManipulationTree &) = delete;             ///< not copyable
+        ManipulationTree &operator=(const ManipulationTree &) = delete;  ///< not copyable
 
+        /** True for a start tree, false for a goal tree. */
         bool forward() const { return forward_; }
+        /** Number of vertices. */
         std::size_t size() const { return vertices_.size(); }
+        /** True when the tree has no vertex. */
         bool empty() const { return vertices_.empty(); }
+        /** Vertex i, in the order added. */
         const Vertex &vertex(std::size_t i) const { return vertices_[i]; }
+        /** Number of roots (vertices without parent). */
         std::size_t rootCount() const { return roots_; }
 
-        /** Adds a copy of state; returns its index. */
+        /** Adds a copy of state with parent (-1 for a new root) and the label of the edge between
+            them; returns its index. */
         int add(const ompl::base::State *state, int parent, SegmentLabel label);
         /** Removes the most recently added vertex. @pre it has no children. */
         void removeLast();
+        /** Removes all vertices. */
         void clear();
 
         /** Index of the vertex nearest to the prepared sample (made for this tree's direction),

@@ -1,8 +1,3 @@
-/* MOPL's sampling of partially defined configurations (paper, section III-B.2). With probability
-   objectProbability one object is sampled on a support surface and the robot and every other
-   object are each left undefined, set to their start value, or set to their goal value; otherwise
-   the robot is sampled (uniformly, or at the far end of the search: the goal pose for the forward
-   tree, the start pose for the backward tree) and the objects are chosen the same way. */
 #pragma once
 
 #include "ompl_mm/base/ManipulationGoal.h"
@@ -12,10 +7,18 @@
 
 namespace ompl_mm
 {
+    /** MOPL's sampling of partially defined configurations (paper, section III-B.2; cited at
+        MOPL). With probability Probabilities::object one object is sampled on a support surface (at
+        its start yaw) and the robot and every other object are each left undefined, set to their
+        start value, or set to their goal value; otherwise the robot is sampled (uniformly, or at
+        the far end of the search: the goal pose for the forward tree, the start pose for the
+        backward tree) and the objects are chosen the same way. A goal value the goal does not
+        define is left undefined. */
     class ModalSampler
     {
     public:
-        /** Probabilities of the sampling choices; defaults are the paper's. */
+        /** Probabilities of the sampling choices; defaults are the paper's. undefined + startValue
+            must not exceed 1 (MOPL::setup() checks). */
         struct Probabilities
         {
             double object{0.6};       ///< sample one object (else the robot)
@@ -24,17 +27,21 @@ namespace ompl_mm
             double randomRobot{0.8};  ///< a sampled robot is uniform (else the far end's pose)
         };
 
-        /** @param start the start state; @param goalState a goal state whose goal-constrained parts
-            are the goal values. */
+        /** A sampler for the problem of goal, with the paper's probabilities. It copies start (the
+            start state) and goalState (a goal state whose goal-constrained parts are the goal
+            values). @pre space and goal outlive the sampler; the scene has a support surface when
+            it has objects. */
         ModalSampler(const ManipulationStateSpace *space, const ManipulationGoal *goal,
                      const ompl::base::State *start, const ompl::base::State *goalState);
+        /** Frees its copies of the states. */
         ~ModalSampler();
-        ModalSampler(const ModalSampler &) = delete;
-        ModalSampler &operator=(const ModalSampler &) = delete;
+        ModalSampler(const ModalSampler &) = delete;             ///< not copyable
+        ModalSampler &operator=(const ModalSampler &) = delete;  ///< not copyable
 
+        /** The probabilities in use, to change. */
         Probabilities &probabilities() { return probabilities_; }
 
-        /** Draws a partial sample for the forward (start) or backward (goal) tree. */
+        /** Draws a partial sample for the forward (start) or backward (goal) tree into out. */
         void sample(PartialState &out, bool forwardTree, ompl::RNG &rng) const;
 
     private:

@@ -1,7 +1,3 @@
-/* A mobile base that moves along world x and y: two prismatic joints on the way from the robot's
-   root to its tool link whose axes are the world x and y axes at the zero pose. Mobile
-   primitives place the tool at a point of the floor plan by setting these two joints, with no
-   inverse kinematics. */
 #pragma once
 
 #include "ompl_mm/model/ManipulationModel.h"
@@ -10,17 +6,22 @@
 
 namespace ompl_mm
 {
+    /** A mobile base that moves along world x and y: two prismatic joints on the way from the
+        robot's root to its tool link whose axes are the world x and y axes at the zero pose. Mobile
+        primitives place the tool at a point of the floor plan by setting these two joints, with no
+        inverse kinematics. Keeps a reference to its model. */
     class PlanarBase
     {
     public:
-        /** Finds the base joints of model's robot (none found: exists() is false). */
+        /** Finds the base joints of model's robot (none found: exists() is false).
+            @pre model outlives this object. */
         explicit PlanarBase(const ManipulationModel &model);
 
         /** True when the robot has both base joints. */
         bool exists() const { return jointX_ >= 0 && jointY_ >= 0; }
 
-        /** Sets the base joints of q so that the tool point is at world (x, y); the other joints
-            keep their values. Exact for any q. @pre exists(). */
+        /** Sets the base joints of q (one value per moving joint) so that the tool point is at world
+            (x, y), metres; the other joints keep their values. Exact for any q. @pre exists(). */
         void placeTool(const Eigen::Vector2d &toolXY, double *q) const;
 
     private:

@@ -1,7 +1,3 @@
-/* A manipulation primitive in the sense of the MOPL paper (Definition III.1): given a start and a
-   target configuration it says whether it applies (isUseful, cheap, no inverse kinematics) and,
-   if so, produces waypoints from the start towards the target (propagate), ignoring obstacles.
-   The empty-space planner chains primitives; collisions are checked afterwards. */
 #pragma once
 
 #include "ompl_mm/primitives/Trajectory.h"
@@ -11,15 +7,24 @@
 
 namespace ompl_mm
 {
+    /** A manipulation primitive in the sense of the MOPL paper (Definition III.1): given a start and
+        a target configuration it says whether it applies (isUseful, cheap, no inverse kinematics)
+        and, if so, produces waypoints from the start towards the target (propagate), ignoring
+        obstacles. The empty-space planner chains primitives; collisions are checked afterwards.
+        Shared through PrimitivePtr; not copyable. */
     class Primitive
     {
     public:
+        /** A primitive called name, of the given kind, in space. @pre space outlives the primitive. */
         Primitive(const ManipulationStateSpace *space, std::string name, PrimitiveKind kind);
+        /** Subclasses are destroyed through this base. */
         virtual ~Primitive() = default;
-        Primitive(const Primitive &) = delete;
-        Primitive &operator=(const Primitive &) = delete;
+        Primitive(const Primitive &) = delete;             ///< not copyable
+        Primitive &operator=(const Primitive &) = delete;  ///< not copyable
 
+        /** The primitive's name, e.g. "transit". */
         const std::string &name() const { return name_; }
+        /** The kind of action it performs; its main segments carry this kind. */
         PrimitiveKind kind() const { return kind_; }
 
         /** True when the primitive can move from `from` towards `to`. */
@@ -34,12 +39,14 @@ namespace ompl_mm
         /** True when every object rests on a support surface in state. */
         bool allObjectsRest(const ompl::base::State *state) const;
 
-        const ManipulationStateSpace *space_;
+        const ManipulationStateSpace *space_;  ///< the space the primitive plans in, not owned
 
     private:
         std::string name_;
         PrimitiveKind kind_;
     };
 
+    /** Shared ownership of a primitive: the setup, the planner and its empty-space planner hold the
+        same primitives. */
     using PrimitivePtr = std::shared_ptr<Primitive>;
 }  // namespace ompl_mm

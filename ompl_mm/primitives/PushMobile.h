@@ -1,7 +1,3 @@
-/* Push-Mobile (MOPL paper, section IV-C): a mobile base pushes one object in a straight line
-   across its support surface. The base first transits to `standoff` behind the object, opposite
-   the push direction, then base and object move together to the object's target; no inverse
-   kinematics is needed because the base joints place the tool directly. */
 #pragma once
 
 #include "ompl_mm/primitives/PlanarBase.h"
@@ -9,20 +5,29 @@
 
 namespace ompl_mm
 {
+    /** Push-Mobile (MOPL paper, section IV-C; cited at MOPL): a mobile base pushes one object in a
+        straight line across its support surface. The base first transits to `standoff` behind the
+        object, opposite the push direction, then base and object move together to the object's
+        target; no inverse kinematics is needed because the base joints place the tool directly
+        (PlanarBase). */
     class PushMobile : public Primitive
     {
     public:
-        /** @param standoff distance from the object's centre to the tool point while pushing,
-            metres (MOBILE BLOCKED: 0.41 = robot radius + object radius + 1 cm).
+        /** A push primitive in space; standoff is the distance from the object's centre to the tool
+            point while pushing, metres (MOBILE BLOCKED: 0.41 = robot radius + object radius + 1 cm).
+            @pre space outlives the primitive.
             @throws ompl::Exception when the robot has no planar base or standoff <= 0. */
         PushMobile(const ManipulationStateSpace *space, double standoff);
 
+        /** Distance from the object's centre to the tool point while pushing, metres. */
         double standoff() const { return standoff_; }
 
-        /** Useful when all objects rest in both states and some object moves in the plane at
-            constant height. */
+        /** Primitive's hook: useful when all objects rest in both states and some object moves in
+            the plane at constant height. */
         bool isUseful(const ompl::base::State *from, const ompl::base::State *to) const override;
-        /** Pushes the moving object nearest to the tool to its target position. */
+        /** Primitive's hook: pushes the sliding object nearest to the tool to its target x, y
+            (keeping its height and yaw): a transit segment behind it (left out when the base is
+            already there), then a push segment. False when no object slides. */
         bool propagate(const ompl::base::State *from, const ompl::base::State *to,
                        Trajectory &trajectory) const override;
 

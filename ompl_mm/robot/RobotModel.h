@@ -1,6 +1,3 @@
-/* A robot read from a URDF file: a tree of links joined by fixed, prismatic, revolute or
-   continuous joints, with forward kinematics for every link frame and the links' collision
-   shapes. Serial arms, humanoid torsos and mobile bases (two prismatic joints) are all trees. */
 #pragma once
 
 #include "ompl_mm/scene/Scene.h"
@@ -16,76 +13,90 @@ namespace ompl_mm
     /** A collision shape attached to a link. */
     struct LinkShape
     {
-        Shape shape;
+        Shape shape;                                              ///< the shape, centred at origin
         Eigen::Isometry3d origin{Eigen::Isometry3d::Identity()};  ///< shape centre in the link frame
     };
 
     /** One link of the tree. */
     struct Link
     {
-        std::string name;
-        int parent{-1};  ///< index of the parent link, -1 for the root
-        int joint{-1};   ///< index into RobotModel::joints() of the joint from the parent, -1 for the root
-        std::vector<LinkShape> shapes;
+        std::string name;  ///< the URDF link name
+        int parent{-1};    ///< index of the parent link, -1 for the root
+        int joint{-1};     ///< index into RobotModel::joints() of the joint from the parent, -1 for the root
+        std::vector<LinkShape> shapes;  ///< collision shapes of the link (none for a link without any)
     };
 
     /** One joint of the tree; moving joints have a variable index. */
     struct Joint
     {
+        /** The URDF joint types the model supports (floating and planar joints are rejected). */
         enum class Type
         {
-            Fixed,
-            Prismatic,
-            Revolute,
-            Continuous
+            Fixed,      ///< does not move
+            Prismatic,  ///< slides along its axis, metres
+            Revolute,   ///< turns about its axis within limits, radians
+            Continuous  ///< turns about its axis without URDF limits, radians
         };
-        std::string name;
-        Type type{Type::Fixed};
+        std::string name;                                         ///< the URDF joint name
+        Type type{Type::Fixed};                                   ///< how it moves
         Eigen::Isometry3d origin{Eigen::Isometry3d::Identity()};  ///< child frame in the parent frame at zero
         Eigen::Vector3d axis{Eigen::Vector3d::UnitX()};           ///< unit axis in the joint frame
-        double lower{0.0};                                        ///< lower limit, metres or radians
-        double upper{0.0};                                        ///< upper limit, metres or radians
-        int variable{-1};  ///< index in the joint vector, -1 for fixed joints
+        double lower{0.0};  ///< lower limit, metres or radians (-pi for continuous joints)
+        double upper{0.0};  ///< upper limit, metres or radians (pi for continuous joints)
+        int variable{-1};   ///< index in the joint vector, -1 for fixed joints
     };
 
-    /** Kinematic tree of a robot. Copyable value type; immutable after loading.
-        Links are stored parents first, so forward kinematics is one pass. */
+    /** A robot read from a URDF file: a tree of links joined by fixed, prismatic, revolute or
+        continuous joints, with forward kinematics for every link frame and the links' collision
+        shapes. Serial arms, humanoid torsos and mobile bases (two prismatic joints) are all trees.
+        Copyable value type; immutable after loading. Links are stored parents first (the root is
+        link 0), so forward kinematics is one pass; moving joints are numbered depth first, in file
+        order within a branch. */
     class RobotModel
     {
     public:
         /** Reads a URDF file.
-            @throws ompl::Exception naming the file when it cannot be read or parsed, when a link has
-            a mesh or another unsupported geometry, or when a moving joint has no limits. */
+            @throws ompl_core::InputError (an ompl::Exception) naming the file, and the line where
+            known, when it cannot be read or parsed, when a link has a mesh or a shape of non-positive
+            size, when a joint is floating or planar or has a zero axis, or when a prismatic or
+            revolute joint has no limits or a lower limit not below its upper one. */
         static RobotModel fromUrdfFile(const std::string &path);
 
-        /** Reads URDF text; sourceName names it in messages. */
+        /** Reads URDF text as fromUrdfFile() does; sourceName names it in messages.
+            @throws ompl_core::InputError as fromUrdfFile(). */
         static RobotModel fromUrdfString(const std::string &urdf, const std::string &sourceName);
 
+        /** The robot's name from the URDF. */
         const std::string &name() const { return name_; }
+        /** All links, parents before children; link 0 is the root. */
         const std::vector<Link> &links() const { return links_; }
+        /** All joints, fixed ones included; Link::joint indexes into it. */
         const std::vector<Joint> &joints() const { return joints_; }
 
         /** Number of moving joints (the dimension of the robot's configuration space). */
         unsigned int dof() const { return dof_; }
 
-        /** The moving joint with variable index i. */
+        /** The moving joint with variable index i. @pre i < dof(). */
         const Joint &variableJoint(unsigned int i) const { return joints_[variableJoints_[i]]; }
 
         /** True when every moving joint is prismatic (false for a robot without moving joints). */
         bool allJointsPrismatic() const;
 
-        /** Index of the link called name. @throws ompl::Exception when there is none. */
+        /** Index of the link called name.
+            @throws ompl_core::InputError (an ompl::Exception) when there is none. */
         int linkIndex(const std::string &name) const;
 
-        /** True when link `descendant` is `ancestor` or lies below it in the tree. */
+        /** True when link `descendant` is `ancestor` or lies below it in the tree.
+            @throws ompl::Exception when either index is not a link's. */
         bool isInSubtree(int descendant, int ancestor) const;
 
-        /** World frames of all links for joint values q (size dof()), given the base pose.
-            @pre frames has links().size() entries. */
+        /** World frames of all links for joint values q (size dof()), given the base pose (the
+            root link's frame in the world); frames is resized to links().size(). */
         void forwardKinematics(const double *q, const Eigen::Isometry3d &base,
                                std::vector<Eigen::Isometry3d> &frames) const;
 
-        /** World frame of one link (walks only the path to the root). */
+        /** World frame of one link for joint values q (size dof()), given the base pose; walks only
+            the path to the root. @throws ompl::Exception when link is not a link's index. */
         Eigen::Isometry3d linkFrame(const double *q, const Eigen::Isometry3d &base, int link) const;
 
     private:

@@ -1,6 +1,3 @@
-/* A multi-modal manipulation problem as plain data: the robot, the fixed world, the movable
-   objects with the surfaces they may rest on, the start, the goal and the primitives. A Scene is
-   what SceneLoader reads from a scene file; code may also fill one directly. */
 #pragma once
 
 #include "ompl_core/io/SourceLocation.h"
@@ -17,53 +14,57 @@
 
 namespace ompl_mm
 {
-    /** A collision shape in URDF's vocabulary, centred at its frame (cylinders along z). */
+    /** A collision shape in URDF's vocabulary, centred at its frame (cylinders along z). Only the
+        fields of its kind are used. */
     struct Shape
     {
+        /** Which solid the shape is. */
         enum class Kind
         {
-            Box,
-            Cylinder,
-            Sphere
+            Box,       ///< a box of edge lengths boxSize
+            Cylinder,  ///< a cylinder of radius and length, its axis along z
+            Sphere     ///< a sphere of radius
         };
-        Kind kind{Kind::Box};
+        Kind kind{Kind::Box};                              ///< which solid, and so which fields count
         Eigen::Vector3d boxSize{Eigen::Vector3d::Zero()};  ///< box edge lengths, metres
         double radius{0.0};                                ///< cylinder or sphere radius, metres
         double length{0.0};                                ///< cylinder length along z, metres
 
-        /** Height of the shape along z (box z size, cylinder length, sphere diameter), metres. */
+        /** Height of the shape along z (box z size, cylinder length, sphere diameter), metres.
+            @throws ompl::Exception when kind holds no Kind value (an out-of-range cast). */
         double height() const;
     };
 
     /** A fixed body of the workspace. */
     struct Obstacle
     {
-        std::string name;
-        Shape shape;
+        std::string name;                                       ///< unique among obstacles and objects
+        Shape shape;                                            ///< its collision shape
         Eigen::Isometry3d pose{Eigen::Isometry3d::Identity()};  ///< shape centre in the world
-        ompl_core::SourceLocation where;
+        ompl_core::SourceLocation where;                        ///< where the scene defines it, for messages
     };
 
     /** A horizontal rectangle on which objects may rest, optionally the top of an obstacle. */
     struct SupportSurface
     {
-        std::string name;
+        std::string name;                              ///< the surface's name, for messages
         Eigen::Vector2d min{Eigen::Vector2d::Zero()};  ///< lower x, y corner, metres
         Eigen::Vector2d max{Eigen::Vector2d::Zero()};  ///< upper x, y corner, metres
         double height{0.0};                            ///< world z of the surface, metres
         std::string obstacle;  ///< obstacle whose top this is (resting objects may touch it); may be empty
-        ompl_core::SourceLocation where;
+        ompl_core::SourceLocation where;  ///< where the scene defines it, for messages
 
         /** An object rests on the surface when its base height differs from the surface's by less
             than this, metres (the tolerance of the original MOPL implementation). */
         static constexpr double REST_TOLERANCE = 1e-4;
 
+        /** True when the world point (x, y), metres, lies in the rectangle, edges included. */
         bool contains(double x, double y) const
         {
             return x >= min.x() && x <= max.x() && y >= min.y() && y <= max.y();
         }
 
-        /** True when an object whose base centre is at `base` rests on this surface. */
+        /** True when an object whose base centre is at `base` (world frame) rests on this surface. */
         bool supports(const Eigen::Vector3d &base) const
         {
             return std::abs(base.z() - height) < REST_TOLERANCE && contains(base.x(), base.y());
@@ -73,25 +74,25 @@ namespace ompl_mm
     /** A box in which objects may be sampled "in the air" (held by the robot). */
     struct SamplingRegion
     {
-        std::string name;
-        Eigen::AlignedBox3d box;
-        ompl_core::SourceLocation where;
+        std::string name;                 ///< the region's name, for messages
+        Eigen::AlignedBox3d box;          ///< the region in the world frame, metres
+        ompl_core::SourceLocation where;  ///< where the scene defines it, for messages
     };
 
     /** Pose of an upright object: the centre of its base and the rotation about the vertical. */
     struct ObjectPose
     {
-        Eigen::Vector3d position{Eigen::Vector3d::Zero()};  ///< base centre, metres
+        Eigen::Vector3d position{Eigen::Vector3d::Zero()};  ///< base centre in the world, metres
         double yaw{0.0};                                    ///< rotation about world z, radians
     };
 
     /** A movable rigid object; its frame is at the centre of its base, z up. */
     struct MovableObject
     {
-        std::string name;
-        Shape shape;
-        ObjectPose start;
-        ompl_core::SourceLocation where;
+        std::string name;  ///< unique among obstacles and objects
+        Shape shape;       ///< collision shape; its centre lies half its height above the base centre
+        ObjectPose start;  ///< pose at the start of the problem
+        ompl_core::SourceLocation where;  ///< where the scene defines it, for messages
     };
 
     /** The robot: a URDF model placed in the world. */
@@ -102,7 +103,7 @@ namespace ompl_mm
         std::string toolLink;                                       ///< link whose origin is the tool point
         Eigen::Vector3d toolOffset{Eigen::Vector3d::Zero()};        ///< tool point in the tool link frame
         std::vector<std::pair<std::string, std::string>> allowedCollisions;  ///< link pairs never checked
-        ompl_core::SourceLocation where;
+        ompl_core::SourceLocation where;  ///< where the scene defines the robot, for messages
     };
 
     /** One coordinate of a goal: a target value, or "don't care" when empty. */
@@ -112,11 +113,11 @@ namespace ompl_mm
     struct ObjectGoal
     {
         std::string object;                      ///< name of the object
-        std::array<GoalCoordinate, 3> position;  ///< x, y, z of the base centre, metres
-        GoalCoordinate yaw;                      ///< radians
+        std::array<GoalCoordinate, 3> position;  ///< x, y, z of the base centre in the world, metres
+        GoalCoordinate yaw;                      ///< rotation about world z, radians
         double positionTolerance{0.01};          ///< metres, per coordinate
         double yawTolerance{0.05};               ///< radians
-        ompl_core::SourceLocation where;
+        ompl_core::SourceLocation where;         ///< where the scene defines the goal, for messages
     };
 
     /** Goal of the robot: each joint optional, with one tolerance. */
@@ -124,7 +125,7 @@ namespace ompl_mm
     {
         std::vector<GoalCoordinate> joints;  ///< one entry per active joint; empty means "don't care"
         double tolerance{0.01};              ///< per joint, joint units (metres or radians)
-        ompl_core::SourceLocation where;
+        ompl_core::SourceLocation where;     ///< where the scene defines the goal, for messages
     };
 
     /** A primitive the planner may use, with its parameters as written in the scene. */
@@ -132,33 +133,36 @@ namespace ompl_mm
     {
         std::string type;                           ///< e.g. "transit", "push_mobile"
         std::map<std::string, std::string> params;  ///< attribute name -> value text
-        ompl_core::SourceLocation where;
+        ompl_core::SourceLocation where;            ///< where the scene lists it, for messages
     };
 
-    /** The whole problem. */
+    /** A multi-modal manipulation problem as plain data: the robot, the fixed world, the movable
+        objects with the surfaces they may rest on, the start, the goal and the primitives. A Scene
+        is what loadScene() reads from a scene file; code may also fill one directly. Positions are
+        in the world frame, in metres. */
     struct Scene
     {
-        std::string name;
+        std::string name;  ///< shown in results and pictures; the loader's default is the file's stem
         std::string file;  ///< the scene file, empty for scenes built in code
-        RobotSpec robot;
-        std::vector<Obstacle> obstacles;
-        std::vector<SupportSurface> surfaces;
-        std::vector<SamplingRegion> samplingRegions;
-        std::vector<MovableObject> objects;
-        std::vector<double> robotStart;  ///< one value per active joint
-        ompl_core::SourceLocation robotStartWhere;
-        RobotGoal robotGoal;
-        std::vector<ObjectGoal> objectGoals;
-        std::vector<PrimitiveSpec> primitives;
-        std::string planner{"mopl"};
+        RobotSpec robot;   ///< the robot and its placement
+        std::vector<Obstacle> obstacles;              ///< the fixed world
+        std::vector<SupportSurface> surfaces;         ///< where objects may rest
+        std::vector<SamplingRegion> samplingRegions;  ///< where held objects may be
+        std::vector<MovableObject> objects;  ///< in state space order: object i is object i of the state
+        std::vector<double> robotStart;      ///< one value per active joint
+        ompl_core::SourceLocation robotStartWhere;  ///< where the scene gives the robot's start, for messages
+        RobotGoal robotGoal;                        ///< the robot's part of the goal
+        std::vector<ObjectGoal> objectGoals;        ///< goals of the objects that have one
+        std::vector<PrimitiveSpec> primitives;      ///< the primitives the planner may use
+        std::string planner{"mopl"};                ///< name in ManipulationSetup::plannerRegistry()
         std::vector<ompl_core::ParameterSetting> plannerParams;  ///< applied to the planner in order
         double timeLimit{60.0};                                  ///< default planning time, seconds
 
         /** Index of the object called name, or -1. */
         int objectIndex(const std::string &name) const;
 
-        /** Index of the first surface that supports an object whose base centre is at `base`, or -1
-            when none does (the object is held). */
+        /** Index of the first surface that supports an object whose base centre is at `base` (world
+            frame), or -1 when none does (the object is held). */
         int restingSurface(const Eigen::Vector3d &base) const;
     };
 }  // namespace ompl_mm

@@ -1,9 +1,3 @@
-/* A geometric::SimpleSetup for a manipulation scene: builds the robot model, the manipulation
-   state space, the validity checker, the start state, the goal, the primitives and the scene's
-   planner (by name from the planner registry, with the scene's parameters), and checks the
-   problem before any planning (robot start of the right size and inside the limits, objects
-   resting, no collision at the start, a goal that can be reached). Use it like any SimpleSetup:
-   solve(), getSolutionPath(), Benchmark. */
 #pragma once
 
 #include "ompl_core/run/PlannerRegistry.h"
@@ -17,12 +11,22 @@
 
 namespace ompl_mm
 {
+    /** A geometric::SimpleSetup for a manipulation scene, the problem MOPL solves (see MOPL for
+        the paper): builds the robot model, the manipulation state space, the validity checker, the
+        start state, the goal, the primitives and the scene's planner (by name from the planner
+        registry, with the scene's parameters), and checks the problem before any planning (robot
+        start of the right size and inside the limits, objects resting, no collision at the start,
+        a goal that can be reached). Use it like any SimpleSetup: solve(), getSolutionPath(),
+        Benchmark. The setup shares the model, space, checker, goal and primitives with the pieces
+        that use them; they live as long as the last holder. */
     class ManipulationSetup : public ompl::geometric::SimpleSetup
     {
     public:
-        /** @param factory builds the scene's primitives; pass your own to add primitive types.
-            @throws ompl_core::InputError naming the scene file and line of any fault in the problem,
-            an unknown planner or a bad planner parameter. */
+        /** Wires the scene (copied into the model, so it need not outlive the setup); factory
+            builds the scene's primitives: pass your own to add primitive types.
+            @throws ompl_core::InputError naming the scene file and line of any fault in the problem
+            (URDF, tool link, start, goal, primitives), an unknown planner or a bad planner
+            parameter. */
         explicit ManipulationSetup(const Scene &scene, const PrimitiveFactory &factory = PrimitiveFactory());
 
         /** The planners that can plan on a ManipulationSetup: "mopl". Add your own with add(). */
@@ -33,16 +37,21 @@ namespace ompl_mm
             @throws ompl_core::InputError for an unknown name. */
         void setPlannerByName(const std::string &name);
 
+        /** The problem: scene, robot and tool. */
         const ManipulationModelPtr &model() const { return model_; }
+        /** The state space (also getStateSpace()). */
         const ManipulationStateSpacePtr &manipulationSpace() const { return space_; }
+        /** The validity checker (also getStateValidityChecker()). */
         const std::shared_ptr<ManipulationValidityChecker> &validityChecker() const { return checker_; }
+        /** The goal (also getGoal()). */
         const std::shared_ptr<ManipulationGoal> &manipulationGoal() const { return goal_; }
         /** The scene's primitives, as the factory built them. */
         const std::vector<PrimitivePtr> &primitives() const { return primitives_; }
         /** The current planner when it is MOPL, else null. */
         std::shared_ptr<MOPL> mopl() const;
 
-        /** The solution as a ManipulationPath. @throws ompl::Exception when there is none. */
+        /** The solution as a ManipulationPath, owned by the problem definition (valid until its
+            solutions are cleared). @throws ompl::Exception when there is none. */
         ManipulationPath &manipulationPath() const;
 
     private:

@@ -1,8 +1,3 @@
-/* The goal of a physics scene: the robot centre within a disc on the floor, whatever the bodies
-   and velocities. Goal samples are proper states, not random ones: the robot at rest at a uniform
-   point of the disc, the bodies at their start poses except those on the goal, which the
-   manipulation knowledge moves out of the robot's way. So goal bias steers planners towards the
-   goal and, when the goal is occupied, towards clearing it. */
 #pragma once
 
 #include <memory>
@@ -15,19 +10,28 @@
 
 namespace ompl_phys
 {
+    /** The goal of a physics scene: the robot centre within a disc on the floor, whatever the bodies
+        and velocities. Goal samples are proper states, not random ones: the robot at rest at a
+        uniform point of the disc, the bodies at their start poses except those on the goal, which
+        the manipulation knowledge moves out of the robot's way. So goal bias steers planners
+        towards the goal and, when the goal is occupied, towards clearing it. */
     class PhysicsGoal : public ompl::base::GoalSampleableRegion
     {
     public:
         /** Spare distance between the robot on the goal and a body moved off it, m. */
         static constexpr double CLEARANCE = 0.02;
 
-        /** startStates: the bodies' start; the goal shares knowledge. */
+        /** The goal of the scene of si's space, which must be a PhysicsStateSpace. startStates: every
+            moving body at the start, copied; the goal shares knowledge, which it keeps alive. */
         PhysicsGoal(const ompl::base::SpaceInformationPtr &si,
                     std::shared_ptr<const ManipulationKnowledge> knowledge, BodyStates startStates);
 
-        /** Distance of the robot centre from the disc's centre; satisfied up to the disc's radius. */
+        /** Distance of the robot centre from the disc's centre, m; satisfied up to the disc's radius
+            (the goal's threshold). */
         double distanceGoal(const ompl::base::State *state) const override;
 
+        /** OMPL's hook: the robot at rest at a uniform point of the disc, the start bodies with the
+            goal's occupants moved CLEARANCE beyond the robot there. */
         void sampleGoal(ompl::base::State *state) const override;
 
         /** Unlimited: every sample is a new point of the disc. */

@@ -1,10 +1,3 @@
-/* Everything OMPL's control planners need for a physics scene, as a control::SimpleSetup: the
-   state space (PhysicsStateSpace, with the robot-position projection registered as its default
-   projection for KPIECE1, EST and PDST), a 2-D force control space bounded by the scene's maximum
-   force, the ODE propagator with the manipulation knowledge, the validity checker, the start and a
-   sampleable goal, the propagation step and control durations, and a grid decomposition for
-   SyclopRRT and SyclopEST. Planners are picked by name with setPlannerByName(), or set directly.
-   Not copyable: it owns the ODE world. */
 #pragma once
 
 #include "ompl_core/run/PlannerRegistry.h"
@@ -22,35 +15,62 @@
 
 namespace ompl_phys
 {
+    /** Everything OMPL's control planners need for a physics scene, as a control::SimpleSetup: the
+        state space (PhysicsStateSpace, with the robot-position projection registered as its default
+        projection for KPIECE1, EST and PDST), a 2-D force control space bounded by the scene's
+        maximum force, the ODE propagator with the manipulation knowledge, the validity checker, the
+        start and a sampleable goal, the propagation step and control durations, and a grid
+        decomposition for SyclopRRT and SyclopEST. Planners are picked by name with
+        setPlannerByName(), or set directly; a new setup starts with kpiece.
+        Not copyable: it owns the ODE world (shared with its propagator). Not thread-safe: the
+        propagator simulates in that one world, so plan and re-simulate from one thread at a time.
+
+        @par External documentation
+        Muhayyuddin, A. Akbari, J. Rosell, "Physics-based Motion Planning: Evaluation Criteria and
+        Benchmarking", ROBOT 2015: Second Iberian Robotics Conference, Advances in Intelligent
+        Systems and Computing vol. 417, Springer, 2016, pp. 43–55, DOI 10.1007/978-3-319-27146-0_4. */
     class PhysicsSetup : public ompl::control::SimpleSetup
     {
     public:
         /** Shares scene (the world, space and knowledge keep it alive).
+            @pre scene is not null.
             @throws ompl_core::InputError naming the scene file and line when the start breaks a rule or
-            overlaps something, or a fixed body covers the goal. */
+            overlaps something, or a fixed body covers the goal.
+            @throws ompl::Exception for a movable prism, which ODE cannot simulate. */
         explicit PhysicsSetup(PhysicsScenePtr scene);
-        /** Plans on a copy of scene. */
+        /** Plans on a copy of scene; throws as the shared form. */
         explicit PhysicsSetup(const PhysicsScene &scene);
+        /** Not copyable: it owns the ODE world. */
         PhysicsSetup(const PhysicsSetup &) = delete;
+        /** Not copyable: it owns the ODE world. */
         PhysicsSetup &operator=(const PhysicsSetup &) = delete;
 
+        /** The scene planned on. */
         const PhysicsScene &scene() const { return world_->scene(); }
+        /** The ODE world the propagator simulates in. */
         const PhysicsWorld &world() const { return *world_; }
+        /** The rules the propagator, the validity checker and the goal judge by. */
         const ManipulationKnowledge &knowledge() const { return *knowledge_; }
+        /** The state space, as its own type. */
         const PhysicsStateSpace &physicsSpace() const { return *space_; }
+        /** The propagator, for its counters. */
         const PhysicsStatePropagator &propagator() const { return *propagator_; }
+        /** The robot grid that the SyCLoP planners are built with. */
         const std::shared_ptr<RobotGridDecomposition> &decomposition() const { return decomposition_; }
+        /** The world, shared, for code that simulates in it (the propagator writes its state
+            afresh on every call). */
         const std::shared_ptr<PhysicsWorld> &worldPtr() const { return world_; }
+        /** The knowledge, shared, for objects that must keep it alive. */
         const std::shared_ptr<const ManipulationKnowledge> &knowledgePtr() const { return knowledge_; }
 
         /** The control planners that can plan on a PhysicsSetup: rrt, est, kpiece, sycloprrt,
-            syclopest, pdst, sst. Add your own with add(). */
+            syclopest, pdst, sst. Add your own with add(). One registry per process. */
         static ompl_core::PlannerRegistry<PhysicsSetup> &plannerRegistry();
 
         /** Makes the registered planner called name, sets the scene's goal bias on it through its
             parameters when it declares "goal_bias", and makes it this setup's planner. An
             optimisation objective set by the previous planner is cleared first.
-            @throws ompl_core::InputError for an unknown name. */
+            @throws ompl_core::InputError for an unknown name, or a goal bias the planner rejects. */
         void setPlannerByName(const std::string &name);
 
         /** Solved with an exact solution (solve() also reports approximate ones as solved). */

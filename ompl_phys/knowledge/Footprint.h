@@ -1,16 +1,17 @@
-/* The outline of a body seen from above, for reasoning about the floor plan: how far a point is
-   from a body standing upright at a pose. Boxes and prisms give their exact rectangle or
-   triangle, cylinders and spheres their circle. */
 #pragma once
 
 #include "ompl_phys/scene/PhysicsScene.h"
 
 namespace ompl_phys
 {
-    /** Distance (m) from point to the footprint of shape at (position, yaw); 0 inside it. */
+    /** Distance (m) from point to the footprint of shape standing upright at (position, yaw); 0
+        inside it. The footprint is the outline of the body seen from above, for reasoning about
+        the floor plan: boxes and prisms give their exact rectangle or triangle, cylinders and
+        spheres their circle. position, yaw (radians) and point are on the floor, world frame. */
     double footprintDistance(const PhysicsShape &shape, const Eigen::Vector2d &position, double yaw,
                              const Eigen::Vector2d &point);
 
-    /** Rotation about the vertical of an orientation (its x axis projected on the floor), radians. */
+    /** Rotation about the vertical of an orientation (its x axis projected on the floor), radians in
+        [-pi, pi]. */
     double yawOf(const Eigen::Quaterniond &orientation);
 }  // namespace ompl_phys

@@ -1,16 +1,3 @@
-/* The manipulation knowledge of the ontological physics-based planner (Muhayyuddin, Akbari,
-   Rosell, "Ontological physics-based motion planning for manipulation", ETFA 2015; benchmarked
-   in "Physics-based motion planning: evaluation criteria and benchmarking", ROBOT 2015) as rules
-   over simulated states. Each body is fixed, freely manipulatable or constraint-oriented:
-   - the robot must not touch a fixed body;
-   - the robot may touch a constraint-oriented body only while its centre lies in the body's push
-     region (a strip along the push axis), and the body may only slide along that axis without
-     turning;
-   - free bodies may be touched and moved in any way.
-   It also reasons about the goal: which bodies occupy the goal region, and where a goal state
-   puts them so the robot fits there (constraint-oriented bodies slide along their axis, free
-   bodies move straight away from the goal). The scene's planning limits (regions, speeds) and
-   finiteness are checked with the same vocabulary of violations. */
 #pragma once
 
 #include "ompl_phys/knowledge/Violation.h"
@@ -21,23 +8,45 @@
 
 namespace ompl_phys
 {
+    /** The manipulation knowledge of the ontological physics-based planner (Muhayyuddin, Akbari,
+        Rosell, "Ontological physics-based motion planning for manipulation", ETFA 2015; benchmarked
+        in "Physics-based motion planning: evaluation criteria and benchmarking", ROBOT 2015) as
+        rules over simulated states. Each body is fixed, freely manipulatable or
+        constraint-oriented:
+        - the robot must not touch a fixed body;
+        - the robot may touch a constraint-oriented body only while its centre lies in the body's
+          push region (a strip along the push axis), and the body may only slide along that axis
+          without turning;
+        - free bodies may be touched and moved in any way.
+
+        It also reasons about the goal: which bodies occupy the goal region, and where a goal state
+        puts them so the robot fits there (constraint-oriented bodies slide along their axis, free
+        bodies move straight away from the goal). The scene's planning limits (regions, speeds) and
+        finiteness are checked with the same vocabulary of violations.
+
+        Immutable after construction, so one knowledge may be shared by several objects and
+        threads. Moving bodies are numbered as in BodyState: the robot (0), then the movable bodies
+        in scene order; BodyStates given to it hold every moving body. */
     class ManipulationKnowledge
     {
     public:
-        /** scene must outlive the knowledge. Moving bodies are numbered as in PhysicsWorld: the robot,
-            then the free and constraint-oriented bodies in scene order. */
+        /** Shares scene, which it keeps alive.
+            @throws ompl::Exception when scene is null. */
         explicit ManipulationKnowledge(PhysicsScenePtr scene);
 
-        /** Whether the robot, centred at robotCentre, may touch scene body `body` in state bodyState
-            (ignored for fixed and free bodies). */
+        /** Whether the robot, centred at robotCentre (world frame, m), may touch scene body `body`
+            in state bodyState: never a fixed body, always a free one, and a constraint-oriented one
+            only while the robot centre lies in its push strip (bodyState is used only then). */
         bool touchAllowed(std::size_t body, const Eigen::Vector3d &robotCentre,
                           const BodyState &bodyState) const;
 
-        /** The first broken rule among the robot's touches (scene body indices) in states. */
+        /** The first broken rule among the robot's touches (scene body indices) in states, or
+            Violation::None. */
         Violation checkTouches(const std::vector<std::size_t> &touches, const BodyStates &states) const;
 
-        /** The first broken rule or limit of the states alone: finiteness, regions, the robot
-            overlapping a fixed body, speeds, and constraint-oriented bodies on their axes. */
+        /** The first broken rule or limit of the states alone, or Violation::None: finiteness,
+            regions, the robot overlapping a fixed body, speeds, and constraint-oriented bodies on
+            their axes. */
         Violation checkStates(const BodyStates &states) const;
 
         /** Moving bodies (indices >= 1) whose footprint overlaps the robot standing anywhere in the
@@ -49,8 +58,10 @@ namespace ompl_phys
         std::vector<std::size_t> fixedBodiesOnGoal() const;
 
         /** Moves the goal occupants of states out of the way of a robot at robotGoal (on the goal
-            disc): constraint-oriented bodies along their push axis (to the nearer free side), free
-            bodies straight away from robotGoal, each with clearance metres to spare. */
+            disc, world frame): constraint-oriented bodies along their push axis (to the nearer
+            free side), free bodies straight away from robotGoal, each with clearance metres to
+            spare. Only positions change; a body that cannot be cleared within the body region
+            stays where it is. */
         void clearGoal(BodyStates &states, const Eigen::Vector2d &robotGoal, double clearance) const;
 
     private:

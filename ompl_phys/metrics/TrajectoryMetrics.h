@@ -1,8 +1,3 @@
-/* Quality measures of a physics-based pushing solution: action, power and smoothness of the robot
-   trajectory, as defined by the physics-based planning benchmark of Muhayyuddin, Akbari and Rosell
-   ("Physics-based motion planning: evaluation criteria and benchmarking", ROBOT 2015). They are
-   computed from the robot centre sampled at the propagation resolution and from the control path
-   split into moves (constant force for a whole number of propagation steps). See docs/metrics.md. */
 #pragma once
 
 #include <Eigen/Core>
@@ -15,7 +10,7 @@ namespace ompl_phys
     /** One move of a control path: a constant force applied for a whole number of propagation steps. */
     struct RobotMove
     {
-        Eigen::Vector3d force{Eigen::Vector3d::Zero()};  ///< applied force, N
+        Eigen::Vector3d force{Eigen::Vector3d::Zero()};  ///< applied force, N, world frame
         std::size_t steps{0};                            ///< duration in propagation steps (>= 1)
     };
 
@@ -23,16 +18,27 @@ namespace ompl_phys
     struct RobotTrajectory
     {
         double stepDuration{0.0};                ///< s between samples, > 0
-        std::vector<Eigen::Vector3d> positions;  ///< m; positions[0] at t = 0; size = 1 + total steps
+        std::vector<Eigen::Vector3d> positions;  ///< world frame, m; [0] at t = 0; size = 1 + total steps
         std::vector<RobotMove> moves;            ///< in order; sum of steps = positions.size() - 1
     };
 
-    /** The paper's three quality measures of one trajectory. */
+    /** Quality measures of a physics-based pushing solution: action, power and smoothness of the
+        robot trajectory, as defined by the physics-based planning benchmark of Muhayyuddin, Akbari
+        and Rosell (below) and computed by computeTrajectoryMetrics(), which gives the formulas.
+        They follow the paper's equations 1–4 as printed, not its platform's code, so they compare
+        with each other but not with the paper's tables. They are computed from the robot centre
+        sampled at the propagation resolution and from the control path split into moves (constant
+        force for a whole number of propagation steps). See docs/metrics.md.
+
+        @par External documentation
+        Muhayyuddin, A. Akbari, J. Rosell, "Physics-based Motion Planning: Evaluation Criteria and
+        Benchmarking", ROBOT 2015: Second Iberian Robotics Conference, Advances in Intelligent
+        Systems and Computing vol. 417, Springer, 2016, pp. 43–55, DOI 10.1007/978-3-319-27146-0_4. */
     struct TrajectoryMetrics
     {
-        double action{0.0};      ///< N·s·m
-        double power{0.0};       ///< W
-        double smoothness{0.0};  ///< m²/s⁵
+        double action{0.0};      ///< effort weighted by covered distance, N·s·m; lower is better
+        double power{0.0};       ///< sum of the moves' mean mechanical powers, W
+        double smoothness{0.0};  ///< integrated squared jerk of the robot centre, m²/s⁵; lower is smoother
     };
 
     /** The paper's equations, implemented as written, on a trajectory with n steps of h seconds

@@ -27,6 +27,14 @@ mkdir -p "$scratch" || fail "cannot create $scratch"
 echo "== install $build_dir into $prefix"
 cmake --install "$build_dir" --prefix "$prefix" || fail "cmake --install $build_dir --prefix $prefix"
 
+# the physics package stands on ompl_core alone, never on the MOPL library
+phys_targets=$prefix/lib/cmake/ompl_phys/ompl_physTargets.cmake
+[ -f "$phys_targets" ] || phys_targets=$(find "$prefix" -name ompl_physTargets.cmake | head -n 1)
+grep -q "ompl_core::ompl_core" "$phys_targets" || fail "$phys_targets does not link ompl_core"
+if grep -q -e "ompl_mm::" -e "find_dependency(ompl_mm" "$phys_targets" "$(dirname "$phys_targets")/ompl_physConfig.cmake"; then
+    fail "the installed ompl_phys package refers to ompl_mm"
+fi
+
 scene=$prefix/share/ompl_mm/scenes/mobile_blocked.xml
 [ -f "$scene" ] || fail "installed scene missing: $scene"
 

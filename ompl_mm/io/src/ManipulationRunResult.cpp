@@ -32,7 +32,9 @@ namespace ompl_mm
         ompl::base::PlannerData data(setup.getSpaceInformation());
         setup.getPlanner()->getPlannerData(data);
         result.details.addCount("tree_vertices", data.numVertices()).addCount("tree_edges", data.numEdges());
-        result.details.addRecord("stats", statisticsRecord(setup.mopl()->statistics()));
+        // MOPL's statistics; another registered planner has only its planner data
+        if (const std::shared_ptr<MOPL> mopl = setup.mopl())
+            result.details.addRecord("stats", statisticsRecord(mopl->statistics()));
         if (result.solved)
         {
             const ManipulationPath &path = setup.manipulationPath();
