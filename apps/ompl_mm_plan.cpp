@@ -82,6 +82,11 @@ namespace
             ompl_core::applyParameters(*setup.getPlanner(), scene.plannerParams);
         }
         ompl_core::applyParameters(*setup.getPlanner(), options.common.parameterSettings());
+        if (options.common.listParams)
+        {
+            options.common.printParameters(*setup.getPlanner());
+            return 0;
+        }
         if (const std::shared_ptr<ompl_mm::MOPL> mopl = setup.mopl())
             mopl->setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         // open the outputs first: a bad path should not cost a whole planning run

@@ -75,6 +75,11 @@ namespace
         ompl_phys::PhysicsSetup setup(scene);
         setup.setPlannerByName(options.common.planner);
         ompl_core::applyParameters(*setup.getPlanner(), options.common.parameterSettings());
+        if (options.common.listParams)
+        {
+            options.common.printParameters(*setup.getPlanner());
+            return 0;
+        }
         // open the outputs first: a bad path should not cost a whole planning run
         std::ofstream json = apps::openOutput(options.common.json);
         std::ofstream svg = apps::openOutput(options.common.svg);

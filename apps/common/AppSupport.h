@@ -1,7 +1,7 @@
 /* What the command-line apps share: the common options (scene, --planner, --seed, --time-limit,
-   --param, --json, --svg, --verbose) with their checks, output files opened before planning, the
-   run description, and the mapping of failures to exit codes (2 for bad input, with the message on
-   stderr prefixed by the app's name). */
+   --param, --list-params, --json, --svg, --verbose) with their checks, output files opened before planning,
+   the run description, and the mapping of failures to exit codes (2 for bad input, with the message on stderr
+   prefixed by the app's name). */
 #pragma once
 
 #include "ompl_core/io/InputError.h"
@@ -33,6 +33,15 @@ namespace apps
         std::vector<std::string> params;  ///< NAME=VALUE, applied after the scene's parameters
         std::string json, svg;
         bool verbose{false};
+        bool listParams{false};  ///< print the planner's parameters instead of planning
+
+        /** Prints the planner's declared parameters, their values for this run and their ranges. */
+        static void printParameters(const ompl::base::Planner &planner)
+        {
+            std::cout << "parameters of " << planner.getName() << " (set with --param NAME=VALUE):\n";
+            for (const std::string &line : ompl_core::describeParameters(planner))
+                std::cout << "  " << line << '\n';
+        }
 
         /** The --param settings. @throws ompl_core::InputError for one without NAME=. */
         std::vector<ompl_core::ParameterSetting> parameterSettings() const
@@ -79,7 +88,10 @@ namespace apps
             "planning time limit in seconds (default: the scene's)")("json", po::value(&options.json),
                                                                      "write the result as JSON to this file")(
             "svg", po::value(&options.svg), "write a top-down picture of the plan to this SVG file")(
-            "verbose,v", po::bool_switch(&options.verbose), "print OMPL's informational messages");
+            "verbose,v", po::bool_switch(&options.verbose), "print OMPL's informational messages")(
+            "list-params", po::bool_switch(&options.listParams),
+            "print the planner's parameters (values after the scene's and --param settings, ranges) and "
+            "exit");
         named.add(extra);
         po::options_description hidden;
         hidden.add_options()("scene", po::value(&options.scene));

@@ -127,6 +127,18 @@ check_help_and_usage() {
     fi
 }
 
+# expect_listed NAME TEXT ARGS...: the app exits 0 and prints the line TEXT (e.g. --list-params)
+expect_listed() {
+    local name=$1 text=$2
+    shift 2
+    run listed "$@"
+    if [ $status -eq 0 ] && grep -q -x -F -- "$text" "$out"; then
+        ok "$name"
+    else
+        not_ok "$name" "command: $plan $*" "expected exit 0 and the line '$text', got exit $status" "$(outputs)"
+    fi
+}
+
 # check_svg FILE: FILE is well-formed XML with an <svg> root
 check_svg() {
     local report

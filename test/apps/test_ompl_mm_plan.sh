@@ -160,6 +160,11 @@ else
     not_ok "--param restart_iterations=50 reaches MOPL: the run restarts" "json: $(head -c 600 "$restarts_json")" "$(outputs)"
 fi
 
+expect_listed "--list-params shows a --param value and the scene's" "  vertex_step = 0.3 (range 0.01:0.01:10.)" \
+    "$scene" --list-params --param vertex_step=0.3
+expect_listed "--list-params shows the scene's parameters" "  moving_object_penalty = 0.6 (range 0.:0.1:100.)" \
+    "$scene" --list-params
+
 expect_bad_option "--param with an unknown name" "command line option --param: unknown parameter 'no_such' of planner MOPL" \
     "$scene" --param no_such=1
 expect_bad_option "--param with a bad value" "bad value 'abc' for parameter 'connect_step'" "$scene" --param connect_step=abc

@@ -110,6 +110,11 @@ expect_bad_edit "start inside a fixed wall" start_in_wall 'start="-0.84 0.97"' '
     'name="wall4"' "starts touching 'wall4'"
 
 expect_bad_option "--planner foo" "foo" "$scene" --planner foo
+expect_listed "--list-params shows the scene's goal bias on RRT" "  goal_bias = 0.05 (range 0.:.05:1.)" \
+    "$scene" --planner rrt --list-params
+expect_listed "--list-params shows a --param value" "  goal_bias = 0.25 (range 0.:.05:1.)" \
+    "$scene" --planner rrt --list-params --param goal_bias=0.25
+
 expect_bad_option "--param with an unknown name" "command line option --param: unknown parameter 'no_such' of planner RRT" \
     "$scene" --planner rrt --param no_such=1
 expect_bad_option "--param with a bad value" "bad value 'abc' for parameter 'goal_bias'" "$scene" --planner rrt \
