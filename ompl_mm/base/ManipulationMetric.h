@@ -59,8 +59,8 @@ namespace ompl_mm
             @throws ompl::Exception when the space has more than MAX_OBJECTS objects. */
         explicit ManipulationMetric(const ManipulationStateSpace *space);
 
-        /** The weights in use, to change; changes count from the next distance. */
-        Weights &weights() { return weights_; }
+        /** Sets the weights; they count from the next distance. */
+        void setWeights(const Weights &weights);
         /** The weights in use. */
         const Weights &weights() const { return weights_; }
 
@@ -102,12 +102,14 @@ namespace ompl_mm
         {
             if (!query.robotDefined)
                 return 0.0;
+            if (jointDistanceOnly_)
+                return jointDistance;
             return weights_.robotWeight *
                    (weights_.jointWeight * jointDistance + weights_.toolWeight * toolDistance);
         }
-        /** False when robotLowerBound() ignores the tool distance (toolWeight 0), so callers may
+        /** False when robotLowerBound() ignores the tool distance (the plain joint distance), so callers may
             skip computing it. */
-        bool boundUsesToolDistance() const { return weights_.toolWeight != 0.0; }
+        bool boundUsesToolDistance() const { return !jointDistanceOnly_; }
 
         /** A lower bound of the tool's legs (first approach and final return) for vertices with
             the same objects whose tool points lie in toolBox and whose squared tool distance to
@@ -178,5 +180,8 @@ namespace ompl_mm
 
         const ManipulationStateSpace *space_;
         Weights weights_;
+        /** The robot term is the plain joint distance (tool and rotation weights 0, robotWeight *
+            jointWeight 1): the hot loops then skip the tool's terms. */
+        bool jointDistanceOnly_{false};
     };
 }  // namespace ompl_mm

@@ -91,8 +91,10 @@ namespace ompl_mm
         /** Shortcut attempts per run of transit segments of the solution. */
         unsigned int getSmoothingAttempts() const { return smoothingAttempts_; }
 
-        /** The metric's weights, to change (also declared parameters). */
-        ManipulationMetric::Weights &metricWeights() { return metric_->weights(); }
+        /** The metric's weights (each also a declared parameter). */
+        const ManipulationMetric::Weights &metricWeights() const { return metric_->weights(); }
+        /** Sets the metric's weights. */
+        void setMetricWeights(const ManipulationMetric::Weights &weights) { metric_->setWeights(weights); }
 
         /** OMPL's hook: grows the start and goal trees in turn until the start tree reaches the goal
             or the trees connect (EXACT_SOLUTION, a ManipulationPath added to the problem

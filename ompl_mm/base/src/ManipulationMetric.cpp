@@ -48,9 +48,9 @@ namespace ompl_mm
         }
     }  // namespace
 
-    ManipulationMetric::ManipulationMetric(const ManipulationStateSpace *space)
-        : space_(space), weights_(defaultWeights(space->model()->robot()))
+    ManipulationMetric::ManipulationMetric(const ManipulationStateSpace *space) : space_(space)
     {
+        setWeights(defaultWeights(space->model()->robot()));
         if (space->objectCount() > MAX_OBJECTS)
             throw ompl::Exception("ManipulationMetric: at most " + std::to_string(MAX_OBJECTS) +
                                   " objects, got " + std::to_string(space->objectCount()));
@@ -88,18 +88,22 @@ namespace ompl_mm
         double squared = 0.0;
         for (std::size_t j = 0; j < point.joints.size(); ++j)
             squared += (joints[j] - point.joints[j]) * (joints[j] - point.joints[j]);
-        double term = weights_.jointWeight * std::sqrt(squared);
         // robots measured in joint space alone skip the tool's terms (and their cost)
-        if (weights_.toolWeight != 0.0 || weights_.rotationWeight != 0.0)
-        {
-            const double rotation =
-                1.0 -
-                std::abs(
-                    Eigen::Map<const Eigen::Vector4d>(packedVertex + 3).dot(point.toolRotation.coeffs()));
-            const double tool = (Eigen::Map<const Eigen::Vector3d>(packedVertex) - point.tool).norm();
-            term += weights_.toolWeight * tool + weights_.rotationWeight * rotation;
-        }
-        return weights_.robotWeight * term;
+        if (jointDistanceOnly_)
+            return std::sqrt(squared);
+        const double rotation =
+            1.0 -
+            std::abs(Eigen::Map<const Eigen::Vector4d>(packedVertex + 3).dot(point.toolRotation.coeffs()));
+        const double tool = (Eigen::Map<const Eigen::Vector3d>(packedVertex) - point.tool).norm();
+        return weights_.robotWeight * (weights_.jointWeight * std::sqrt(squared) +
+                                       weights_.toolWeight * tool + weights_.rotationWeight * rotation);
+    }
+
+    void ManipulationMetric::setWeights(const Weights &weights)
+    {
+        weights_ = weights;
+        jointDistanceOnly_ = weights.toolWeight == 0.0 && weights.rotationWeight == 0.0 &&
+                             weights.robotWeight * weights.jointWeight == 1.0;
     }
 
     ManipulationMetric::Weights ManipulationMetric::defaultWeights(const RobotModel &robot)

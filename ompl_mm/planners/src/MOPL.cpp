@@ -78,7 +78,13 @@ namespace ompl_mm
             [this](const std::string &name, double ManipulationMetric::Weights::*field, const char *range)
         {
             params().declareParam<double>(
-                name, [this, field](double v) { metric_->weights().*field = v; },
+                name,
+                [this, field](double v)
+                {
+                    ManipulationMetric::Weights weights = metric_->weights();
+                    weights.*field = v;
+                    metric_->setWeights(weights);
+                },
                 [this, field]() { return metric_->weights().*field; });
             params()[name].setRangeSuggestion(range);
         };

@@ -26,10 +26,12 @@ namespace
     protected:
         MobileMetric()
         {
-            metric_.weights().movingObjectPenalty = MOVING;
-            metric_.weights().moveToObjectPenalty = MOVE_TO;
-            metric_.weights().moveToObjectFactor = FACTOR;
-            metric_.weights().contactDistance = CONTACT;
+            ManipulationMetric::Weights weights = metric_.weights();
+            weights.movingObjectPenalty = MOVING;
+            weights.moveToObjectPenalty = MOVE_TO;
+            weights.moveToObjectFactor = FACTOR;
+            weights.contactDistance = CONTACT;
+            metric_.setWeights(weights);
         }
 
         void robot(ob::State *s, const V2 &q) { setRobot(space_, s, q.x(), q.y()); }
@@ -226,8 +228,10 @@ TEST_F(MobileMetric, ToolWeightAddsTheToolDistanceToTheRobotTerm)
 {
     robot(to_, V2(0.4, -0.2));
     const double joints = std::hypot(1.9 - 0.4, 1.9 + 0.2);
-    metric_.weights().toolWeight = 0.5;
-    metric_.weights().robotWeight = 2.0;
+    ManipulationMetric::Weights weights = metric_.weights();
+    weights.toolWeight = 0.5;
+    weights.robotWeight = 2.0;
+    metric_.setWeights(weights);
     // the tool moves with the base: its distance equals the joint distance
     EXPECT_NEAR(distance(from_, to_), 2.0 * (joints + 0.5 * joints), 1e-12);
 }

@@ -23,9 +23,11 @@ namespace
     protected:
         MobileTree()
         {
-            metric_.weights().movingObjectPenalty = 0.6;
-            metric_.weights().moveToObjectPenalty = 0.1;
-            metric_.weights().moveToObjectFactor = 1.0;
+            ManipulationMetric::Weights weights = metric_.weights();
+            weights.movingObjectPenalty = 0.6;
+            weights.moveToObjectPenalty = 0.1;
+            weights.moveToObjectFactor = 1.0;
+            metric_.setWeights(weights);
         }
 
         double uniform() { return position_(gen_); }
