@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Compares two builds of a planning app on the same scene and seeds, in one run: for each seed
 it runs the old binary and then the new one (alternating, so both see the same machine load)
-and reports each one's median and mean planning time, success, and how many seeds gave an
-identical result (every value both write, but the times). Standard library only.
+and reports each one's median and mean planning time, success, the median of the per-seed time
+ratios (robust to seeds of very different length), and how many seeds gave an identical result
+(every value both write, but the times). Standard library only.
 
 Example (before/after figures of a change):
   benchmarks/ab_seeds.py /tmp/old/ompl_mm_plan build/apps/ompl_mm_plan scenes/mobile_blocked.xml --seeds 50
@@ -54,7 +55,8 @@ def main():
     print(describe("new", new))
     print(f"identical results (all values both write, but times): {same}/{args.seeds} seeds")
     ratio = statistics.median(r["time_s"] for r in new) / statistics.median(r["time_s"] for r in old)
-    print(f"median time new/old: {ratio:.3f}")
+    paired = statistics.median(n["time_s"] / o["time_s"] for o, n in zip(old, new) if o["time_s"] > 0)
+    print(f"median time new/old: {ratio:.3f}; median of the per-seed ratios new/old: {paired:.3f}")
 
 
 if __name__ == "__main__":
