@@ -4,6 +4,7 @@
 #include "common/AppSupport.h"
 #include "ompl_phys/control/PathSimulation.h"
 #include "ompl_phys/control/PhysicsSetup.h"
+#include "ompl_phys/io/PhysicsPathFile.h"
 #include "ompl_phys/io/PhysicsRunResult.h"
 #include "ompl_phys/io/PhysicsSceneSvg.h"
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
@@ -23,17 +24,21 @@ namespace
     struct Options
     {
         apps::CommonOptions common{"kpiece"};
+        std::string path;  ///< re-simulated path file, empty for none
     };
 
     bool parseOptions(int argc, char **argv, Options &options, int &exitCode)
     {
-        po::options_description none;
+        po::options_description extra;
+        extra.add_options()("path", po::value(&options.path),
+                            "write the re-simulated solution (forces, robot and body positions per step) to "
+                            "this text file");
         if (!apps::parseCommandLine(
                 argc, argv,
                 "Usage: ompl_phys_plan SCENE.xml [options]\n"
                 "Plans a physics-based pushing task: a sphere robot driven by a planar force in an ODE\n"
                 "world, with manipulation knowledge, using an OMPL control planner.\n",
-                "control planner: " + ompl_phys::PhysicsSetup::plannerRegistry().nameList(), none,
+                "control planner: " + ompl_phys::PhysicsSetup::plannerRegistry().nameList(), extra,
                 options.common, exitCode))
             return false;
         if (!ompl_phys::PhysicsSetup::plannerRegistry().has(options.common.planner))
@@ -83,6 +88,7 @@ namespace
         // open the outputs first: a bad path should not cost a whole planning run
         std::ofstream json = apps::openOutput(options.common.json);
         std::ofstream svg = apps::openOutput(options.common.svg);
+        std::ofstream path = apps::openOutput(options.path);
 
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
         setup.solve(timeLimit);
@@ -104,6 +110,8 @@ namespace
             ompl_phys::writePhysicsSceneSvg(svg, setup, result,
                                             scene.name + " · " + options.common.planner + " · seed " +
                                                 std::to_string(options.common.seed));
+        if (path.is_open() && result)
+            ompl_phys::writeSimulatedPathFile(path, setup, *result);
         return solved ? 0 : 1;
     }
 }  // namespace

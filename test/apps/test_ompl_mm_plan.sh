@@ -87,6 +87,46 @@ else
     not_ok "path file has a header and start/transit/push waypoints" "$report"
 fi
 
+# the JSON's values, recomputed from the path file and the picture
+if report=$(python3 - "$path1" "$json" "$svg" 2>&1 <<'PY'
+import json, math, sys
+import xml.etree.ElementTree as ET
+lines = [line for line in open(sys.argv[1]).read().splitlines() if line.strip()]
+header = lines[0][1:].split()
+rows = [line.split() for line in lines[1:]]
+column = {name: k for k, name in enumerate(header)}
+tools = [[float(row[column[f"tool.{c}"]]) for c in "xyz"] for row in rows]
+d = json.load(open(sys.argv[2]))
+assert d["path_vertices"] == len(rows), f"path_vertices {d['path_vertices']}, path file {len(rows)} waypoints"
+# a mobile base moves its tool in straight lines between waypoints: the length is the sum of the chords
+length = sum(math.dist(a, b) for a, b in zip(tools, tools[1:]))
+assert abs(d["path_length_m"] - length) < 1e-6 * max(1.0, length), f"path_length_m {d['path_length_m']}, chords {length}"
+# one application per run of equal labels (kind and object)
+counts = {"transit": 0, "push": 0, "pickup": 0, "transfer": 0}
+labels = [(row[0], row[1]) for row in rows[1:]]
+for k, label in enumerate(labels):
+    if k == 0 or label != labels[k - 1]:
+        counts[label[0]] += 1
+assert d["primitives"] == counts, f"primitives {d['primitives']}, from the labels {counts}"
+# the picture's waypoints are the path's tool points under one scale and shift (y flipped)
+dots = [(float(c.get("cx")), float(c.get("cy"))) for c in ET.parse(sys.argv[3]).getroot().iter("{http://www.w3.org/2000/svg}circle")
+        if c.get("class") == "waypoint"]
+assert len(dots) == len(tools), f"{len(dots)} waypoints drawn, {len(tools)} in the path file"
+i, j = max(((a, b) for a in range(len(tools)) for b in range(len(tools))),
+           key=lambda p: abs(tools[p[0]][0] - tools[p[1]][0]))
+scale = (dots[j][0] - dots[i][0]) / (tools[j][0] - tools[i][0])
+assert scale > 0, f"the picture's x axis runs backwards (scale {scale})"
+for (x, y, _), (px, py) in zip(tools, dots):
+    ex = dots[i][0] + scale * (x - tools[i][0])
+    ey = dots[i][1] - scale * (y - tools[i][1])
+    assert abs(px - ex) < 0.02 and abs(py - ey) < 0.02, f"waypoint ({x}, {y}) drawn at ({px}, {py}), expected ({ex:.2f}, {ey:.2f})"
+PY
+); then
+    ok "JSON values recomputed from the path file and the SVG: length, vertices, primitive counts, drawn waypoints"
+else
+    not_ok "JSON values recomputed from the path file and the SVG: length, vertices, primitive counts, drawn waypoints" "$report"
+fi
+
 # --- 2. determinism --------------------------------------------------------------------------------
 path2=$scratch/solved2.txt
 run solve2 "$scene" --seed 1 --path "$path2"

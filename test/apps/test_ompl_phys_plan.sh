@@ -24,17 +24,18 @@ cd "$scratch" || exit 2
 scene=$scenes/$base
 
 # --- 1. help and usage -----------------------------------------------------------------------------
-check_help_and_usage --planner --seed --time-limit --param --json --svg rrt est kpiece sycloprrt syclopest pdst sst
+check_help_and_usage --planner --seed --time-limit --param --json --svg --path rrt est kpiece sycloprrt syclopest pdst sst
 
 # --- 2. a solved run and its outputs ------------------------------------------------------------
 json1=$scratch/solved1.json
 svg=$scratch/solved.svg
-run solve1 "$scene" --planner kpiece --seed 1 --time-limit 60 --json "$json1" --svg "$svg"
+path1=$scratch/solved1.txt
+run solve1 "$scene" --planner kpiece --seed 1 --time-limit 60 --json "$json1" --svg "$svg" --path "$path1"
 if [ $status -eq 0 ]; then
     ok "solves $base with kpiece, --seed 1: exit 0"
 else
     not_ok "solves $base with kpiece, --seed 1: exit 0" \
-        "command: $plan $scene --planner kpiece --seed 1 --time-limit 60 --json $json1 --svg $svg" \
+        "command: $plan $scene --planner kpiece --seed 1 --time-limit 60 --json $json1 --svg $svg --path $path1" \
         "expected exit 0, got $status" "$(outputs)"
 fi
 
@@ -65,6 +66,52 @@ else
 fi
 
 check_svg "$svg"
+
+# the JSON's values, recomputed without ODE from the re-simulated path file (docs/metrics.md)
+if report=$(python3 - "$path1" "$json1" 2>&1 <<'PY'
+import json, math, sys
+lines = open(sys.argv[1]).read().splitlines()
+head = lines[0][1:].split()
+params = {head[k]: float(head[k + 1]) for k in range(0, len(head), 2)}
+columns = lines[1][1:].split()
+rows = [[float(v) for v in line.split()] for line in lines[2:]]
+h = params["step_s"]
+col = {name: k for k, name in enumerate(columns)}
+robot = [[row[col[f"robot.{c}"]] for c in "xyz"] for row in rows]
+n = len(rows) - 1
+d = json.load(open(sys.argv[2]))
+assert d["steps"] == n, f"steps {d['steps']}, path file {n}"
+assert abs(d["duration_s"] - n * h) < 1e-9, f"duration_s {d['duration_s']}, path file {n * h}"
+# moves: runs of equal move indices, each with one force
+moves = []
+for k in range(n):
+    index, force = int(rows[k][col["move"]]), [rows[k][col[f"f{c}"]] for c in "xyz"]
+    if moves and moves[-1][0] == index:
+        assert moves[-1][2] == force, f"move {index} changes its force at sample {k}"
+        moves[-1][1] += 1
+    else:
+        moves.append([index, 1, force, k])
+assert d["moves"] == len(moves), f"moves {d['moves']}, path file {len(moves)}"
+action = power = 0.0
+for index, steps, force, a in moves:
+    b = a + steps
+    covered = sum(math.dist(robot[k], robot[k + 1]) for k in range(a, b))
+    action += math.hypot(*force) * steps * h * covered
+    power += sum(f * (robot[b][c] - robot[a][c]) for c, f in enumerate(force)) / (steps * h)
+jerks = [sum(((robot[k + 3][c] - 3 * robot[k + 2][c] + 3 * robot[k + 1][c] - robot[k][c]) / h ** 3) ** 2
+             for c in range(3)) for k in range(n - 2)]
+smoothness = n * h * sum(jerks) / (n - 2) if n >= 3 else 0.0
+for key, value in (("action", action), ("power", power), ("smoothness", smoothness)):
+    assert abs(d[key] - value) <= 1e-6 * max(1.0, abs(value)), f"{key} {d[key]}, recomputed {value}"
+end = math.dist(robot[-1][:2], (params["goal_x"], params["goal_y"]))
+assert d["reaches_goal"] == (end <= params["goal_radius"]), f"reaches_goal {d['reaches_goal']}, end {end:.4f} m from the goal"
+PY
+); then
+    ok "JSON values recomputed from the re-simulated path file: steps, duration, moves, action, power, smoothness, goal"
+else
+    not_ok "JSON values recomputed from the re-simulated path file: steps, duration, moves, action, power, smoothness, goal" \
+        "$report"
+fi
 
 # --- 3. determinism --------------------------------------------------------------------------------
 json2=$scratch/solved2.json

@@ -10,7 +10,7 @@ namespace ompl_mm
     {
         const auto *space = path.getSpaceInformation()->getStateSpace()->as<ManipulationStateSpace>();
         const ManipulationModel &model = *space->model();
-        out << "# segment object";
+        out << "# segment object tool.x tool.y tool.z";
         for (unsigned int j = 0; j < model.dof(); ++j)
             out << ' ' << model.robot().variableJoint(j).name;
         for (const MovableObject &object : model.scene().objects)
@@ -28,6 +28,8 @@ namespace ompl_mm
                 out << primitiveKindName(label.kind) << ' '
                     << (label.object >= 0 ? model.scene().objects[label.object].name : std::string("-"));
             }
+            const Eigen::Vector3d tool = space->toolPosition(state);
+            out << ' ' << tool.x() << ' ' << tool.y() << ' ' << tool.z();
             for (unsigned int j = 0; j < model.dof(); ++j)
                 out << ' ' << space->robotValues(state)[j];
             for (unsigned int o = 0; o < model.objectCount(); ++o)
