@@ -10,6 +10,8 @@ namespace ompl_mm
     namespace
     {
         constexpr double SAME = 1e-9;
+        /** The largest longest-valid-segment fraction OMPL accepts (it requires less than 1). */
+        constexpr double MAX_SEGMENT_FRACTION = 1.0 - 1e-9;
 
         unsigned int positionIndex(unsigned int object)
         {
@@ -168,7 +170,9 @@ namespace ompl_mm
         for (unsigned int i = 0; i < getSubspaceCount(); ++i)
         {
             const ob::StateSpacePtr &space = getSubspace(i);
-            space->setLongestValidSegmentFraction(std::min(1.0, step / space->getMaximumExtent()));
+            // OMPL takes fractions below 1 only: a step longer than a subspace checks it once per motion
+            space->setLongestValidSegmentFraction(
+                std::min(MAX_SEGMENT_FRACTION, step / space->getMaximumExtent()));
         }
         setup();  // the longest valid segment is computed here
     }

@@ -119,9 +119,9 @@ namespace ompl_mm
     {
         if (!(step > 0.0) || !std::isfinite(step))
             throw ompl::Exception("MOPL", "connect_step must be positive, got " + std::to_string(step));
-        connectStep_ = step;
         // OMPL's motion checks (PathGeometric::check, the simplifier) step as finely as MOPL's walks
         std::static_pointer_cast<ManipulationStateSpace>(si_->getStateSpace())->setCollisionResolution(step);
+        connectStep_ = step;
     }
 
     void MOPL::setVertexStep(double step)

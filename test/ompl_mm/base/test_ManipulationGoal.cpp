@@ -5,8 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
+#include <vector>
 
 using namespace ompl_mm;
 using namespace ompl_mm::test;
@@ -196,4 +200,71 @@ TEST(ManipulationGoalInput, GoalOffEverySurfaceInOneCoordinateThrows)
     scene.objectGoals[0].position = {std::nullopt, std::nullopt, 0.5};
     what = setupError(scene);
     EXPECT_TRUE(startsWith(what, line)) << "no ompl_core::InputError for z = 0.5: '" << what << "'";
+}
+
+TEST(ManipulationGoalInput, RobotGoalOnItsLimitsIsAcceptedAndJustBeyondNamesJointAndValue)
+{
+    // MOBILE BLOCKED's joints x and y range over [-2.5, 2.5]; either limit itself is a valid goal
+    const Scene base = mobileBlockedScene();
+    const std::string line = base.robotGoal.where.str() + ": ";
+    Scene scene = base;
+    scene.robotGoal.joints = {2.5, -2.5};
+    EXPECT_EQ(setupError(scene), "");
+    scene.robotGoal.joints = {-2.5, 2.5};
+    EXPECT_EQ(setupError(scene), "");
+
+    scene.robotGoal.joints = {2.5001, 0.0};
+    EXPECT_EQ(setupError(scene), line + "goal value 2.500100 of joint 'x' is outside its limits");
+    scene.robotGoal.joints = {std::nullopt, -2.5001};
+    EXPECT_EQ(setupError(scene), line + "goal value -2.500100 of joint 'y' is outside its limits");
+}
+
+TEST(ManipulationGoalInput, RobotGoalNeedsOneValuePerJointOrNone)
+{
+    // no robot goal at all is fine; otherwise one (possibly "*") value per moving joint
+    Scene scene = mobileBlockedScene();
+    const std::string line = scene.robotGoal.where.str() + ": ";
+    scene.robotGoal.joints.clear();
+    EXPECT_EQ(setupError(scene), "");
+    scene.robotGoal.joints = {0.0, 0.0, 0.0};
+    EXPECT_EQ(setupError(scene), line + "goal has 3 joint values but the robot has 2 moving joints");
+    scene.robotGoal.joints = {std::nullopt, std::nullopt};
+    EXPECT_EQ(setupError(scene), "");
+}
+
+TEST(ManipulationGoalInput, ObjectGoalOnTheSurfaceEdgeOrWithinTheRestToleranceIsAccepted)
+{
+    // the floor spans [-2.5, 2.5] in x and y at height 0, resting within 1e-4
+    const Scene base = mobileBlockedScene();
+    const std::string offSurface =
+        base.objectGoals.at(0).where.str() +
+        ": goal of object 'obj3' lies on no support surface, so it can never rest there";
+    const std::vector<std::array<GoalCoordinate, 3>> inside{{2.5, -2.5, std::nullopt},
+                                                            {-2.5, 2.5, 0.0},
+                                                            {std::nullopt, std::nullopt, 0.9e-4},
+                                                            {std::nullopt, std::nullopt, -0.9e-4}};
+    const std::vector<std::array<GoalCoordinate, 3>> outside{{2.5001, std::nullopt, std::nullopt},
+                                                             {std::nullopt, -2.5001, std::nullopt},
+                                                             {std::nullopt, std::nullopt, 1.1e-4},
+                                                             {std::nullopt, std::nullopt, -1.1e-4}};
+    for (const auto &position : inside)
+    {
+        Scene scene = base;
+        scene.objectGoals[0].position = position;
+        EXPECT_EQ(setupError(scene), "");
+    }
+    for (const auto &position : outside)
+    {
+        Scene scene = base;
+        scene.objectGoals[0].position = position;
+        EXPECT_EQ(setupError(scene), offSurface);
+    }
+}
+
+TEST(ManipulationGoalInput, GoalForAnUnknownObjectNamesIt)
+{
+    // a Scene built in code may name an object the loader would have rejected
+    Scene scene = mobileBlockedScene();
+    scene.objectGoals[0].object = "obj9";
+    EXPECT_EQ(setupError(scene), scene.objectGoals[0].where.str() + ": goal names unknown object 'obj9'");
 }

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
+#include <vector>
 
 using namespace ompl_mm;
 using namespace ompl_mm::test;
@@ -234,4 +236,222 @@ TEST_F(MobileMetric, ToolWeightAddsTheToolDistanceToTheRobotTerm)
     metric_.setWeights(weights);
     // the tool moves with the base: its distance equals the joint distance
     EXPECT_NEAR(distance(from_, to_), 2.0 * (joints + 0.5 * joints), 1e-12);
+}
+
+TEST_F(MobileMetric, EqualNonZeroYawsDoNotCount)
+{
+    // every object turned, by the same yaw in both states: only obj2's displacement makes it move
+    const double yaws[] = {0.7, -1.1, 2.5, -3.0};
+    for (unsigned int i = 0; i < space_.objectCount(); ++i)
+    {
+        const Eigen::Vector3d p = space_.objectPosition(from_, i);
+        setObject(space_, from_, i, p.x(), p.y(), 0.0, yaws[i]);
+        setObject(space_, to_, i, p.x(), p.y(), 0.0, yaws[i]);
+    }
+    const V2 r0(1.9, 1.9), r1(-0.3, 1.0), p0(0.8, -0.1), p1(0.2, 0.7);
+    robot(to_, r1);
+    setObject(space_, to_, 1, p1.x(), p1.y(), 0.0, yaws[1]);
+    const double expected =
+        (r1 - r0).norm() + MOVING + (p1 - p0).norm() + moveTo((p0 - r0).norm()) + (r1 - p1).norm();
+    EXPECT_NEAR(distance(from_, to_), expected, 1e-12);
+    // a yaw difference within 1e-9 is no turn either
+    setObject(space_, to_, 3, 1.2, 1.9, 0.0, yaws[3] + 5e-10);
+    EXPECT_NEAR(distance(from_, to_), expected, 1e-12);
+}
+
+TEST_F(MobileMetric, TurnedObjectIsVisitedLikeAMovedOne)
+{
+    // obj4 only turns (no displacement), obj2 is moved: both pay the penalty and are visited,
+    // nearest to the tool first (obj4), then from obj4's target to obj2's start
+    const V2 r0(1.9, 1.9), r1(1.0, 1.0), p0(0.8, -0.1), p1(0.2, 0.7), b0(1.2, 1.9);
+    robot(to_, r1);
+    object(to_, 1, p1);
+    setObject(space_, to_, 3, b0.x(), b0.y(), 0.0, 1.2);
+    const double expected = (r1 - r0).norm() + 2 * MOVING + (p1 - p0).norm() + moveTo((b0 - r0).norm()) +
+                            moveTo((p0 - b0).norm()) + (r1 - p1).norm();
+    EXPECT_NEAR(distance(from_, to_), expected, 1e-12);
+
+    // turning obj4 alone: its penalty and the tool's way there and back
+    space_.copyState(to_, from_);
+    setObject(space_, to_, 3, b0.x(), b0.y(), 0.0, -2.0);
+    EXPECT_NEAR(distance(from_, to_), MOVING + moveTo((b0 - r0).norm()) + (r0 - b0).norm(), 1e-12);
+}
+
+namespace
+{
+    using Weights = ManipulationMetric::Weights;
+
+    /** The unit arm of test/data/unit_arm1.urdf (shoulder about world z at height 1, tool 0.5 m out
+        along the arm) with one cup on a floor, and the metric with the default arm weights. */
+    class ArmMetric : public ::testing::Test
+    {
+    protected:
+        static Scene armScene()
+        {
+            Scene scene = unitArmScene();
+            scene.surfaces.push_back(supportSurface("floor", V2(-1.0, -1.0), V2(1.0, 1.0)));
+            scene.objects.push_back(cylinderObject("cup", 0.05, 0.1));
+            return scene;
+        }
+
+        ~ArmMetric() override
+        {
+            space_.freeState(from_);
+            space_.freeState(to_);
+        }
+
+        /** Sets the shoulder and the cup (on the floor) of s. */
+        void set(ob::State *s, double q, const V2 &cup, double yaw)
+        {
+            space_.robotValues(s)[0] = q;
+            setObject(space_, s, 0, cup.x(), cup.y(), 0.0, yaw);
+        }
+
+        double distance(const ob::State *a, const ob::State *b) const
+        {
+            MetricPoint pa, pb;
+            metric_.makePoint(a, pa);
+            metric_.makePoint(b, pb);
+            return metric_.distance(pa, pb);
+        }
+
+        /** The tool point for shoulder angle q, written out. */
+        static Eigen::Vector3d tool(double q) { return {0.5 * std::cos(q), 0.5 * std::sin(q), 1.0}; }
+
+        /** The robot term written out: the tool turns about z by the shoulder angle, and the unit
+            quaternions of turns by a and b about z have the dot product
+            cos(a/2) cos(b/2) + sin(a/2) sin(b/2). */
+        static double robotTerm(const Weights &w, double a, double b)
+        {
+            const double dot = std::cos(a / 2) * std::cos(b / 2) + std::sin(a / 2) * std::sin(b / 2);
+            return w.robotWeight *
+                   (w.jointWeight * std::abs(a - b) + w.toolWeight * (tool(a) - tool(b)).norm() +
+                    w.rotationWeight * (1.0 - std::abs(dot)));
+        }
+
+        /** The tool's approach to an object d away. */
+        static double approach(const Weights &w, double d)
+        {
+            return d > w.contactDistance ? w.moveToObjectPenalty + w.moveToObjectFactor * d : 0.0;
+        }
+
+        ManipulationStateSpace space_{makeModel(armScene())};
+        ManipulationMetric metric_{&space_};
+        ob::State *from_ = space_.allocState();
+        ob::State *to_ = space_.allocState();
+    };
+}  // namespace
+
+TEST_F(ArmMetric, RobotTermAddsToolDistanceAndRotationToTheJointDistance)
+{
+    // the default arm weights: 0.5 per radian, 1 per metre of the tool, 2 per unit of rotation
+    const Weights w = metric_.weights();
+    ASSERT_EQ(w.robotWeight, 1.0);
+    ASSERT_EQ(w.jointWeight, 0.5);
+    ASSERT_EQ(w.toolWeight, 1.0);
+    ASSERT_EQ(w.rotationWeight, 2.0);
+    const V2 cup(0.6, 0.2);
+    for (const auto &[a, b] :
+         std::vector<std::pair<double, double>>{{0.0, 1.0}, {0.3, -1.2}, {-3.0, 3.0}, {1.1, 1.1}})
+    {
+        set(from_, a, cup, 0.4);
+        set(to_, b, cup, 0.4);
+        const double expected = robotTerm(w, a, b);
+        EXPECT_NEAR(distance(from_, to_), expected, 1e-12) << a << " -> " << b;
+        EXPECT_NEAR(distance(to_, from_), expected, 1e-12) << b << " -> " << a;
+        // the tool and rotation terms matter: the joint distance alone is well below
+        if (a != b)
+        {
+            EXPECT_GT(expected - 0.5 * std::abs(a - b), 0.1) << a << " -> " << b;
+        }
+    }
+}
+
+TEST_F(ArmMetric, RotationTermTakesTheNearerOfTheTwoQuaternions)
+{
+    // turns by 2.9 and -2.9 are 0.48 rad apart although the joint moves 5.8 rad; without the
+    // absolute value of the dot product the rotation term would be near 2 instead of near 0
+    const Weights w = metric_.weights();
+    set(from_, 2.9, V2(0.6, 0.2), 0.0);
+    set(to_, -2.9, V2(0.6, 0.2), 0.0);
+    const double rotation = 1.0 - std::abs(std::cos(2.9));
+    EXPECT_LT(rotation, 0.05);
+    EXPECT_NEAR(distance(from_, to_), 0.5 * 5.8 + 2.0 * 0.5 * std::sin(2.9) + 2.0 * rotation, 1e-12);
+    EXPECT_NEAR(distance(from_, to_), robotTerm(w, 2.9, -2.9), 1e-12);
+}
+
+TEST_F(ArmMetric, RobotTermFollowsTheWeights)
+{
+    // weights apart from the defaults, so each term's factor is checked
+    Weights w = metric_.weights();
+    w.robotWeight = 2.0;
+    w.jointWeight = 0.25;
+    w.toolWeight = 3.0;
+    w.rotationWeight = 0.5;
+    metric_.setWeights(w);
+    EXPECT_TRUE(metric_.boundUsesToolDistance());
+    set(from_, 0.3, V2(0.6, 0.2), 0.4);
+    set(to_, -1.2, V2(0.6, 0.2), 0.4);
+    const double joint = 1.5, toolDistance = (tool(0.3) - tool(-1.2)).norm();
+    const double rotation = 1.0 - std::cos(0.75);
+    EXPECT_NEAR(distance(from_, to_), 2.0 * (0.25 * joint + 3.0 * toolDistance + 0.5 * rotation), 1e-12);
+
+    // with the tool and rotation weights 0 the robot term is the weighted joint distance
+    w.toolWeight = 0.0;
+    w.rotationWeight = 0.0;
+    metric_.setWeights(w);
+    EXPECT_NEAR(distance(from_, to_), 2.0 * 0.25 * joint, 1e-12);
+}
+
+TEST_F(ArmMetric, MovedAndTurnedCupAddsPenaltyDisplacementAndToolLegsInSpace)
+{
+    // the tool is 1 m above the floor: its legs to and from the cup are 3-D distances
+    const Weights w = metric_.weights();
+    const double qa = 0.3, qb = -1.2;
+    const Eigen::Vector3d c0(0.6, 0.2, 0.0), c1(0.2, 0.7, 0.0);
+    set(from_, qa, c0.head<2>(), 0.4);
+    set(to_, qb, c1.head<2>(), -0.5);
+    const double expected = robotTerm(w, qa, qb) + w.movingObjectPenalty + (c1 - c0).norm() +
+                            approach(w, (c0 - tool(qa)).norm()) + (tool(qb) - c1).norm();
+    EXPECT_NEAR(distance(from_, to_), expected, 1e-12);
+
+    // only turned (yaw 0.4 to -2.0): penalty and the tool's way to the cup and back, no displacement
+    set(to_, qa, c0.head<2>(), -2.0);
+    EXPECT_NEAR(distance(from_, to_),
+                w.movingObjectPenalty + approach(w, (c0 - tool(qa)).norm()) + (tool(qa) - c0).norm(), 1e-12);
+    // the same non-zero yaw at both ends: the robot term alone
+    set(to_, qb, c0.head<2>(), 0.4);
+    EXPECT_NEAR(distance(from_, to_), robotTerm(w, qa, qb), 1e-12);
+}
+
+TEST_F(ArmMetric, QueriesAgreeWithTheFullDistanceToTheCompletedSample)
+{
+    // random partial samples with random yaws: the prepared-query distance equals the full one,
+    // and the robot lower bound (joint and tool distances) never exceeds it
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> joint(-3.0, 3.0), floor(-1.0, 1.0), yaw(-M_PI, M_PI);
+    std::bernoulli_distribution coin(0.5);
+    PartialState sample(&space_);
+    ob::State *completed = space_.allocState();
+    ManipulationMetric::Query query;
+    MetricPoint vertex;
+    for (int trial = 0; trial < 200; ++trial)
+    {
+        set(from_, joint(gen), V2(floor(gen), floor(gen)), yaw(gen));
+        set(sample.state(), joint(gen), V2(floor(gen), floor(gen)), yaw(gen));
+        if (coin(gen))
+            space_.copyObject(sample.state(), from_, 0);
+        sample.setRobotDefined(coin(gen));
+        sample.setObjectDefined(0, coin(gen));
+        const bool forward = coin(gen);
+        metric_.makePoint(from_, vertex);
+        metric_.makeQuery(sample, forward, query);
+        const double d = metric_.distance(vertex, query, metric_.objectCost(vertex, query));
+        sample.complete(from_, completed);
+        EXPECT_NEAR(d, forward ? distance(from_, completed) : distance(completed, from_), 1e-9) << trial;
+        const double qv = space_.robotValues(from_)[0], qs = space_.robotValues(completed)[0];
+        EXPECT_LE(metric_.robotLowerBound(query, std::abs(qv - qs), (tool(qv) - tool(qs)).norm()), d + 1e-12)
+            << trial;
+    }
+    space_.freeState(completed);
 }

@@ -191,3 +191,66 @@ TEST(ManipulationValidityCheckerTable, RestingObjectMayTouchItsSurfaceObstacle)
     EXPECT_FALSE(checker.isValid(state));
     space->freeState(state);
 }
+
+TEST_F(MobileChecker, NonFiniteValuesAreInvalidWithTheirOwnReason)
+{
+    // infinity or NaN in a joint, an object position or a yaw; checked before anything else
+    const double inf = std::numeric_limits<double>::infinity();
+    robotAt(inf, 1.9);
+    EXPECT_FALSE(checker_.isValid(state_));
+    EXPECT_EQ(checker_.explain(state_), "the state has a non-finite value");
+    robotAt(1.9, 1.9);
+    objectAt(2, -1.5, -inf);
+    EXPECT_EQ(checker_.explain(state_), "the state has a non-finite value");
+    objectAt(2, -1.5, -1.5);
+    setObject(space_, state_, 2, -1.5, -1.5, 0.0, std::numeric_limits<double>::quiet_NaN());
+    EXPECT_EQ(checker_.explain(state_), "the state has a non-finite value");
+}
+
+TEST_F(MobileChecker, BothJointLimitsOfBothJointsAreCheckedAndNamed)
+{
+    // the limits are checked before collisions (beyond them the disc is also in a wall)
+    robotAt(2.6, 0.0);
+    EXPECT_FALSE(checker_.isValid(state_));
+    EXPECT_EQ(checker_.explain(state_), "joint 'x' = 2.600000 is outside [-2.500000, 2.500000]");
+    robotAt(-2.6, 0.0);
+    EXPECT_EQ(checker_.explain(state_), "joint 'x' = -2.600000 is outside [-2.500000, 2.500000]");
+    robotAt(0.0, 2.6);
+    EXPECT_EQ(checker_.explain(state_), "joint 'y' = 2.600000 is outside [-2.500000, 2.500000]");
+    robotAt(0.0, -2.6);
+    EXPECT_EQ(checker_.explain(state_), "joint 'y' = -2.600000 is outside [-2.500000, 2.500000]");
+}
+
+TEST_F(MobileChecker, ObjectsWithinTheRestToleranceRestAndBeyondItAreHeld)
+{
+    // 1e-4 is the rest tolerance: two objects just within it both rest, just beyond it both are held
+    objectAt(0, -2.0, 0.3, 0.9e-4);
+    objectAt(1, 0.8, -0.1, -0.9e-4);
+    EXPECT_TRUE(checker_.isValid(state_)) << checker_.explain(state_);
+    objectAt(0, -2.0, 0.3, 1.1e-4);
+    EXPECT_TRUE(checker_.isValid(state_)) << checker_.explain(state_);  // one held is allowed
+    objectAt(1, 0.8, -0.1, -1.1e-4);
+    EXPECT_FALSE(checker_.isValid(state_));
+    EXPECT_EQ(checker_.explain(state_), "objects 'obj1' and 'obj2' both rest on no surface");
+}
+
+TEST(ManipulationValidityCheckerArm, JointOnItsLimitsIsValidAndJustBeyondIsNot)
+{
+    // the unit arm's shoulder ranges over [-3, 3]; nothing else can make its states invalid
+    auto space = std::make_shared<ManipulationStateSpace>(makeModel(unitArmScene()));
+    auto si = std::make_shared<ob::SpaceInformation>(space);
+    ManipulationValidityChecker checker(si);
+    ob::State *state = space->allocState();
+    for (double q : {3.0, -3.0, 0.0})
+    {
+        space->robotValues(state)[0] = q;
+        EXPECT_TRUE(checker.isValid(state)) << q << ": " << checker.explain(state);
+    }
+    space->robotValues(state)[0] = 3.0001;
+    EXPECT_FALSE(checker.isValid(state));
+    EXPECT_EQ(checker.explain(state), "joint 'shoulder' = 3.000100 is outside [-3.000000, 3.000000]");
+    space->robotValues(state)[0] = -3.0001;
+    EXPECT_FALSE(checker.isValid(state));
+    EXPECT_EQ(checker.explain(state), "joint 'shoulder' = -3.000100 is outside [-3.000000, 3.000000]");
+    space->freeState(state);
+}

@@ -1,13 +1,18 @@
 // Tests for MOPL: solves MOBILE BLOCKED for fixed seeds and re-checks every solution with an
-// independent planar geometry model (discs and rectangles, no FCL), then checks reproducibility.
+// independent planar geometry model (discs and rectangles, no FCL), then checks reproducibility and
+// the input checks of MOPL's parameters.
 #include "common/MobileBlocked.h"
 
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
 
 using namespace ompl_mm;
 using namespace ompl_mm::test;
@@ -258,4 +263,109 @@ TEST(MOPL, RestartsClearTheTreesAndStillSolve)
     // run k may last 300 * 2^k iterations: the last run is the one that solved
     EXPECT_LT(stats.iterations, 300u * ((1u << (stats.restarts + 1)) - 1) + 1);
     EXPECT_TRUE(setup.manipulationPath().check());
+}
+
+namespace
+{
+    /** The message of the ompl::Exception that f() throws, or "" when it throws none. */
+    template <typename F>
+    std::string omplErrorOf(F &&f)
+    {
+        try
+        {
+            f();
+        }
+        catch (const ompl::Exception &e)
+        {
+            return e.what();
+        }
+        return "";
+    }
+}  // namespace
+
+TEST(MOPLParameters, StepsMustBePositiveAndFiniteAndSmallOnesAreAccepted)
+{
+    // connect_step and vertex_step reject 0, negatives, infinity and NaN, naming the value
+    ManipulationSetup setup(mobileBlockedScene());
+    MOPL &mopl = *setup.mopl();
+    EXPECT_EQ(omplErrorOf([&] { mopl.setConnectStep(0.0); }),
+              "MOPL: connect_step must be positive, got 0.000000");
+    EXPECT_EQ(omplErrorOf([&] { mopl.setConnectStep(-0.05); }),
+              "MOPL: connect_step must be positive, got -0.050000");
+    EXPECT_EQ(omplErrorOf([&] { mopl.setConnectStep(std::numeric_limits<double>::infinity()); }),
+              "MOPL: connect_step must be positive, got inf");
+    EXPECT_TRUE(startsWith(omplErrorOf([&] { mopl.setConnectStep(std::nan("")); }),
+                           "MOPL: connect_step must be positive, got "));
+    EXPECT_EQ(mopl.getConnectStep(), 0.05) << "a rejected value leaves the scene's";
+    EXPECT_EQ(omplErrorOf([&] { mopl.setConnectStep(1e-6); }), "");
+    EXPECT_EQ(mopl.getConnectStep(), 1e-6);
+
+    EXPECT_EQ(omplErrorOf([&] { mopl.setVertexStep(0.0); }),
+              "MOPL: vertex_step must be positive, got 0.000000");
+    EXPECT_EQ(omplErrorOf([&] { mopl.setVertexStep(-1.0); }),
+              "MOPL: vertex_step must be positive, got -1.000000");
+    EXPECT_EQ(omplErrorOf([&] { mopl.setVertexStep(std::numeric_limits<double>::infinity()); }),
+              "MOPL: vertex_step must be positive, got inf");
+    EXPECT_TRUE(startsWith(omplErrorOf([&] { mopl.setVertexStep(std::nan("")); }),
+                           "MOPL: vertex_step must be positive, got "));
+    EXPECT_EQ(mopl.getVertexStep(), 0.35) << "a rejected value leaves the scene's";
+    EXPECT_EQ(omplErrorOf([&] { mopl.setVertexStep(1e-6); }), "");
+    EXPECT_EQ(mopl.getVertexStep(), 1e-6);
+}
+
+TEST(MOPLParameters, ProbabilitiesMustLieInTheClosedUnitInterval)
+{
+    // each probability accepts 0 and 1 and rejects values just outside, naming parameter and value
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    ManipulationSetup setup(mobileBlockedScene());
+    ompl::base::ParamSet &params = setup.mopl()->params();
+    for (const std::string name : {"object_sample_probability", "undefined_probability",
+                                   "start_value_probability", "random_robot_probability"})
+    {
+        EXPECT_EQ(omplErrorOf([&] { params.setParam(name, "-0.01"); }),
+                  "MOPL: " + name + " must be in [0, 1], got -0.010000");
+        EXPECT_EQ(omplErrorOf([&] { params.setParam(name, "1.01"); }),
+                  "MOPL: " + name + " must be in [0, 1], got 1.010000");
+        for (const char *inside : {"0", "1"})
+        {
+            EXPECT_TRUE(params.setParam(name, inside)) << name << " = " << inside;
+            EXPECT_EQ(std::stod(params.getParam(name)->getValue()), std::stod(inside)) << name;
+        }
+    }
+}
+
+TEST(MOPLParameters, UndefinedAndStartValueProbabilitiesMayNotSumAboveOne)
+{
+    // checked when the planner is set up: a sum of exactly 1 is fine, just above is not
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    auto setupError = [](const char *undefined, const char *startValue)
+    {
+        ManipulationSetup setup(mobileBlockedScene());
+        EXPECT_TRUE(setup.mopl()->params().setParam("undefined_probability", undefined));
+        EXPECT_TRUE(setup.mopl()->params().setParam("start_value_probability", startValue));
+        return omplErrorOf([&] { setup.setup(); });
+    };
+    EXPECT_EQ(setupError("0.5", "0.5"), "");
+    EXPECT_EQ(setupError("0.75", "0.25"), "");
+    EXPECT_EQ(setupError("1", "0"), "");
+    EXPECT_EQ(setupError("0.5", "0.5000001"),
+              "MOPL: undefined_probability + start_value_probability exceeds 1");
+    EXPECT_EQ(setupError("1", "1"), "MOPL: undefined_probability + start_value_probability exceeds 1");
+}
+
+TEST(MOPLParameters, SetupWithoutPrimitivesThrows)
+{
+    // a planner made without primitives (or emptied) cannot plan
+    ManipulationSetup setup(mobileBlockedScene());
+    setup.mopl()->setPrimitives({});
+    EXPECT_EQ(omplErrorOf([&] { setup.setup(); }), "MOPL: has no primitives: call setPrimitives() first");
+}
+
+TEST(MOPLParameters, NeedsAManipulationStateSpace)
+{
+    // MOPL plans only in a ManipulationStateSpace; another space is named in the message
+    auto space = std::make_shared<ompl::base::RealVectorStateSpace>(2);
+    space->setName("plane");
+    auto si = std::make_shared<ompl::base::SpaceInformation>(space);
+    EXPECT_EQ(omplErrorOf([&] { MOPL mopl(si, {}); }), "MOPL: needs a ManipulationStateSpace, got plane");
 }

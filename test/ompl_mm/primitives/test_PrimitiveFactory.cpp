@@ -159,3 +159,43 @@ TEST_F(Factory, ParametersReadNumbers)
     fresh.number("a");
     EXPECT_THROW(fresh.rejectUnread(), ompl_core::InputError);
 }
+
+TEST_F(Factory, MessagesNameTheLineTheTypeAndTheParameter)
+{
+    // the whole message of each check of the factory and of PrimitiveParameters
+    EXPECT_EQ(error({spec("pick_and_place")}),
+              "unit_scene.xml:17: unknown primitive <pick_and_place> (known: push_mobile, transit)");
+    EXPECT_EQ(error({spec("push_mobile")}),
+              "unit_scene.xml:17: <push_mobile> needs the parameter 'standoff'");
+    EXPECT_EQ(error({spec("push_mobile", {{"standoff", "0.4x"}})}),
+              "unit_scene.xml:17: <push_mobile> parameter 'standoff' must be a finite number, got '0.4x'");
+    EXPECT_EQ(error({spec("push_mobile", {{"standoff", "0.41"}, {"speed", "2"}})}),
+              "unit_scene.xml:17: unknown parameter 'speed' for <push_mobile>");
+}
+
+TEST_F(Factory, StandoffMustBePositiveAndATinyOneIsAccepted)
+{
+    // PushMobile's own check, reported at the primitive's line with the value
+    EXPECT_EQ(error({spec("push_mobile", {{"standoff", "0"}})}),
+              "unit_scene.xml:17: push_mobile standoff must be positive, got 0.000000");
+    EXPECT_EQ(error({spec("push_mobile", {{"standoff", "-0.2"}})}),
+              "unit_scene.xml:17: push_mobile standoff must be positive, got -0.200000");
+    const auto primitives = factory_.build({spec("push_mobile", {{"standoff", "1e-6"}})}, &space_);
+    ASSERT_EQ(primitives.size(), 1u);
+    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<PushMobile>(primitives[0])->standoff(), 1e-6);
+}
+
+TEST(PrimitiveFactoryRobot, PushMobileOnAnArmIsReportedAtItsLine)
+{
+    // push_mobile needs a planar base; the unit arm has one revolute joint
+    ManipulationStateSpace space(makeModel(unitArmScene()));
+    PrimitiveFactory factory;
+    EXPECT_EQ(
+        inputErrorOf(
+            [&] {
+                factory.build({spec("push_mobile", {{"standoff", "0.41"}})}, &space);
+            }),
+        "unit_scene.xml:17: push_mobile needs a robot whose base moves along world x and y (two prismatic "
+        "joints)");
+    EXPECT_EQ(factory.build({spec("transit")}, &space).size(), 1u);
+}

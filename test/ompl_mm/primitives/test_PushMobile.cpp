@@ -191,3 +191,38 @@ TEST(PushMobileRobot, ConstructorRejectsARobotWithoutPlanarBase)
     ManipulationStateSpace space(makeModel(unitArmScene()));
     EXPECT_THROW(PushMobile(&space, STANDOFF), ompl::Exception);
 }
+
+TEST_F(MobilePush, ConstructorMessagesNameTheStandoff)
+{
+    // the message carries the offending value
+    auto message = [this](double standoff) -> std::string
+    {
+        try
+        {
+            PushMobile push(&space_, standoff);
+        }
+        catch (const ompl::Exception &e)
+        {
+            return e.what();
+        }
+        return "";
+    };
+    EXPECT_EQ(message(0.0), "push_mobile standoff must be positive, got 0.000000");
+    EXPECT_EQ(message(-0.1), "push_mobile standoff must be positive, got -0.100000");
+    EXPECT_EQ(message(1e-6), "");
+}
+
+TEST(PushMobileRobot, ArmRobotMessageNamesTheNeededBase)
+{
+    ManipulationStateSpace space(makeModel(unitArmScene()));
+    try
+    {
+        PushMobile push(&space, STANDOFF);
+        FAIL() << "no exception";
+    }
+    catch (const ompl::Exception &e)
+    {
+        EXPECT_EQ(std::string(e.what()),
+                  "push_mobile needs a robot whose base moves along world x and y (two prismatic joints)");
+    }
+}

@@ -339,6 +339,106 @@ namespace ompl_mm
                         "link 'arm': sphere radius must be positive");
         }
 
+        TEST(RobotModel, MalformedXmlNamesTheLine)
+        {
+            // checked before urdfdom sees the text: the line of the unclosed <link>
+            const std::string urdf = "<robot name=\"x\">\n  <link name=\"a\">\n</robot>\n";
+            const std::string message = inputErrorOf([&] { RobotModel::fromUrdfString(urdf, "bad.urdf"); });
+            EXPECT_TRUE(test::startsWith(message, "bad.urdf:2: invalid URDF: malformed XML (")) << message;
+        }
+
+        TEST(RobotModel, TextWithoutRobotElementIsRejected)
+        {
+            // well-formed XML whose root is not <robot>: no line to name, the file only
+            EXPECT_EQ(inputErrorOf(
+                          [] {
+                              RobotModel::fromUrdfString("<robt name=\"x\"><link name=\"a\"/></robt>",
+                                                         "bad.urdf");
+                          }),
+                      "bad.urdf: invalid URDF: no <robot> element");
+        }
+
+        TEST(RobotModel, UrdfThatUrdfdomRejectsIsReportedAsInvalid)
+        {
+            // a robot without a name parses as XML but urdfdom returns no model
+            EXPECT_EQ(
+                inputErrorOf(
+                    [] { RobotModel::fromUrdfString("<robot><link name=\"a\"/></robot>", "bad.urdf"); }),
+                "bad.urdf: invalid URDF");
+        }
+
+        TEST(RobotModel, NonPositiveCollisionSizesNameTheLinkLineAndValues)
+        {
+            // the link "arm" is on line 4 of oneJointUrdf(); each size must be > 0, and a tiny one is
+            // accepted
+            auto error = [](const std::string &geometry)
+            {
+                return inputErrorOf(
+                    [&] {
+                        RobotModel::fromUrdfString(oneJointUrdf("revolute", REVOLUTE_LIMITS, geometry),
+                                                   "bad.urdf");
+                    });
+            };
+            EXPECT_EQ(error("<box size=\"0.5 0 0.5\"/>"),
+                      "bad.urdf:4: link 'arm': box size must be positive, got 0.5 0 0.5");
+            EXPECT_EQ(error("<box size=\"-1 0.5 0.5\"/>"),
+                      "bad.urdf:4: link 'arm': box size must be positive, got -1 0.5 0.5");
+            EXPECT_EQ(error("<box size=\"0.5 1e-06 0.5\"/>"), "");
+            EXPECT_EQ(error("<cylinder radius=\"0\" length=\"0.5\"/>"),
+                      "bad.urdf:4: link 'arm': cylinder radius and length must be positive, got 0 and 0.5");
+            EXPECT_EQ(
+                error("<cylinder radius=\"0.1\" length=\"-0.5\"/>"),
+                "bad.urdf:4: link 'arm': cylinder radius and length must be positive, got 0.1 and -0.5");
+            EXPECT_EQ(error("<cylinder radius=\"1e-06\" length=\"1e-06\"/>"), "");
+            EXPECT_EQ(error("<sphere radius=\"0\"/>"),
+                      "bad.urdf:4: link 'arm': sphere radius must be positive, got 0");
+            EXPECT_EQ(error("<sphere radius=\"-0.1\"/>"),
+                      "bad.urdf:4: link 'arm': sphere radius must be positive, got -0.1");
+            EXPECT_EQ(error("<sphere radius=\"1e-06\"/>"), "");
+        }
+
+        TEST(RobotModel, LimitsJustApartAndTinyAxesAreAccepted)
+        {
+            // the bounds of the joint checks: lower just below upper, any non-zero axis (normalised)
+            const RobotModel robot = RobotModel::fromUrdfString(
+                oneJointUrdf("prismatic",
+                             "    <axis xyz=\"0 1e-9 0\"/>\n"
+                             "    <limit lower=\"1\" upper=\"1.000001\" effort=\"1\" velocity=\"1\"/>\n"),
+                "ok.urdf");
+            ASSERT_EQ(robot.dof(), 1u);
+            EXPECT_EQ(robot.variableJoint(0).lower, 1.0);
+            EXPECT_EQ(robot.variableJoint(0).upper, 1.000001);
+            EXPECT_LT((robot.variableJoint(0).axis - Eigen::Vector3d::UnitY()).norm(), TOLERANCE);
+        }
+
+        TEST(RobotModel, LinkIndexOutOfRangeThrows)
+        {
+            // link indices of isInSubtree() and linkFrame() must lie in [0, links)
+            const RobotModel robot = load("planar_2link.urdf");
+            const double q[] = {0.0, 0.0};
+            const int last = static_cast<int>(robot.links().size()) - 1;
+            auto message = [](auto &&f) -> std::string
+            {
+                try
+                {
+                    f();
+                }
+                catch (const ompl::Exception &e)
+                {
+                    return e.what();
+                }
+                return "";
+            };
+            EXPECT_EQ(message([&] { robot.linkFrame(q, Eigen::Isometry3d::Identity(), last + 1); }),
+                      "RobotModel: link index 4 out of range [0, 4)");
+            EXPECT_EQ(message([&] { robot.isInSubtree(-1, 0); }),
+                      "RobotModel: link index -1 out of range [0, 4)");
+            EXPECT_EQ(message([&] { robot.isInSubtree(0, last + 1); }),
+                      "RobotModel: link index 4 out of range [0, 4)");
+            EXPECT_EQ(message([&] { robot.linkFrame(q, Eigen::Isometry3d::Identity(), last); }), "");
+            EXPECT_TRUE(robot.isInSubtree(last, 0));
+        }
+
         TEST(RobotModel, JointErrorsGiveTheLineOfTheJoint)
         {
             const std::string urdf = oneJointUrdf("revolute", "");

@@ -320,3 +320,166 @@ TEST(SceneLoader, StartObjectOffEverySurface)
     expectError(replaced(8, R"(    <object name="obj1" xyz="-1 0 0.3"/>)"), 8,
                 "start of object 'obj1' does not rest on any <surface>");
 }
+
+TEST(SceneLoader, SceneWithoutSurfaceIsRejectedAtTheRoot)
+{
+    // at least one support surface is needed; the error points at <scene>
+    expectError(replaced(4, ""), 1, "missing <surface> in <scene> (at least one support surface is needed)");
+}
+
+TEST(SceneLoader, SceneWithoutStartGoalOrPrimitivesIsRejectedAtTheRoot)
+{
+    // each of <start>, <goal> and <primitives> is required; the error points at <scene>
+    const std::vector<std::pair<std::string, std::vector<int>>> sections{
+        {"start", {6, 7, 8, 9}}, {"goal", {10, 11, 12}}, {"primitives", {13}}};
+    for (const auto &[tag, lines] : sections)
+    {
+        std::vector<std::string> without = validLines();
+        for (int line : lines)
+            without.at(line - 1) = "";
+        expectError(without, 1, "missing <" + tag + "> in <scene>");
+    }
+}
+
+TEST(SceneLoader, BodyWithoutShapeIsRejected)
+{
+    // an object or obstacle needs one shape; zero is reported at the body, naming it
+    expectError(replaced(5, R"(  <object name="obj1"></object>)"), 5,
+                "<object> 'obj1' needs exactly one shape (<box>, <cylinder> or <sphere>), found 0");
+    expectError(replaced(3, R"(  <obstacle name="block"><origin xyz="1 1 0.5"/></obstacle>)"), 3,
+                "<obstacle> 'block' needs exactly one shape (<box>, <cylinder> or <sphere>), found 0");
+}
+
+TEST(SceneLoader, BodyWithTwoShapesIsRejectedAtTheSecondShape)
+{
+    // the error points at the second shape, the one to remove
+    expectError(
+        replaced(3,
+                 "  <obstacle name=\"block\"><box size=\"1 1 1\"/>\n    <sphere radius=\"0.5\"/></obstacle>"),
+        4, "<obstacle> 'block' needs exactly one shape (<box>, <cylinder> or <sphere>), found 2");
+    expectError(replaced(5,
+                         "  <object name=\"obj1\"><cylinder radius=\"0.2\" length=\"0.5\"/>\n"
+                         "    <box size=\"0.1 0.1 0.1\"/></object>"),
+                6, "<object> 'obj1' needs exactly one shape (<box>, <cylinder> or <sphere>), found 2");
+}
+
+TEST(SceneLoader, SurfaceMinMustBeBelowMaxInXAndAnyPositiveSizeIsAccepted)
+{
+    const std::string floor = validLines().at(3);
+    // equal or reversed in x is rejected, naming the surface; 1e-6 wide in both is accepted
+    expectError(replaced(4, floor + R"( <surface name="shelf" height="1" min="0 0" max="0 1"/>)"), 4,
+                "surface 'shelf': min must be less than max in both x and y");
+    expectError(replaced(4, floor + R"( <surface name="shelf" height="1" min="0.5 0" max="0.4 1"/>)"), 4,
+                "surface 'shelf': min must be less than max");
+    const Scene scene =
+        parseLines(replaced(4, floor + R"( <surface name="shelf" height="1" min="0 0" max="1e-6 1e-6"/>)"));
+    ASSERT_EQ(scene.surfaces.size(), 2u);
+    EXPECT_EQ(scene.surfaces[1].max, Eigen::Vector2d(1e-6, 1e-6));
+}
+
+TEST(SceneLoader, SurfaceNamingAnUnknownObstacleIsRejected)
+{
+    // the obstacle attribute must name one of the scene's <obstacle>s
+    expectError(
+        replaced(4, R"(  <surface name="floor" height="0" min="-2.5 -2.5" max="2.5 2.5" obstacle="table"/>)"),
+        4, "surface 'floor' names unknown obstacle 'table'");
+    const Scene scene = parseLines(replaced(
+        4, R"(  <surface name="floor" height="0" min="-2.5 -2.5" max="2.5 2.5" obstacle="block"/>)"));
+    EXPECT_EQ(scene.surfaces.at(0).obstacle, "block");
+}
+
+TEST(SceneLoader, RegionMinMustBeBelowMaxInEveryAxis)
+{
+    const std::string floor = validLines().at(3);
+    // equal in z is rejected, naming the region; just above in z is accepted
+    expectError(replaced(4, floor + R"( <region name="air" min="-1 -1 1" max="1 1 1"/>)"), 4,
+                "region 'air': min must be less than max in x, y and z");
+    expectError(replaced(4, floor + R"( <region name="air" min="1 -1 0" max="-1 1 1"/>)"), 4,
+                "region 'air': min must be less than max in x, y and z");
+    const Scene scene =
+        parseLines(replaced(4, floor + R"( <region name="air" min="-1 -1 1" max="1 1 1.0001"/>)"));
+    ASSERT_EQ(scene.samplingRegions.size(), 1u);
+    EXPECT_EQ(scene.samplingRegions[0].name, "air");
+    EXPECT_DOUBLE_EQ(scene.samplingRegions[0].box.max().z(), 1.0001);
+}
+
+TEST(SceneLoader, DuplicateSurfaceOrRegionNameNamesTheFirstLine)
+{
+    const std::string floor = validLines().at(3);
+    expectError(replaced(4, floor + "\n" + floor), 5, "duplicate surface name 'floor' (first at line 4)");
+    const std::string region = R"(  <region name="air" min="-1 -1 0" max="1 1 1"/>)";
+    expectError(replaced(4, floor + region + "\n" + region), 5,
+                "duplicate region name 'air' (first at line 4)");
+}
+
+TEST(SceneLoader, StartWithoutRobotJointsIsRejectedAtTheStart)
+{
+    expectError(replaced(7, ""), 6, "missing <robot joints=\"...\"/> in <start>");
+}
+
+TEST(SceneLoader, SecondStartOrGoalForAnObjectNamesTheFirstLine)
+{
+    const std::vector<std::string> lines = validLines();
+    expectError(replaced(8, lines.at(7) + "\n" + lines.at(7)), 9,
+                "second start for object 'obj1' (first at line 8)");
+    expectError(replaced(11, lines.at(10) + "\n" + lines.at(10)), 12,
+                "second goal for object 'obj1' (first at line 11)");
+}
+
+TEST(SceneLoader, StartRestsWithinTheToleranceAndInsideTheSurfaceEdges)
+{
+    // z within 1e-4 of the surface and x, y on its edges rest; just beyond either does not
+    for (const char *xyz : {"-1 0 0.00009", "-1 0 -0.00009", "2.5 -2.5 0", "-2.5 2.5 0"})
+        EXPECT_EQ(
+            inputErrorOf(
+                [&]
+                { parseLines(replaced(8, std::string(R"(    <object name="obj1" xyz=")") + xyz + "\"/>")); }),
+            "")
+            << xyz;
+    for (const char *xyz : {"-1 0 0.00011", "-1 0 -0.00011", "2.5001 0 0", "0 -2.5001 0"})
+        expectError(replaced(8, std::string(R"(    <object name="obj1" xyz=")") + xyz + "\"/>"), 8,
+                    "start of object 'obj1' does not rest on any <surface>");
+}
+
+TEST(SceneLoader, GoalWithoutChildrenIsRejected)
+{
+    expectError(replaced(11, ""), 10, "<goal> needs at least one <robot> or <object> child");
+}
+
+TEST(SceneLoader, EmptyPrimitivesIsRejected)
+{
+    expectError(replaced(13, "  <primitives></primitives>"), 13,
+                "<primitives> needs at least one primitive, e.g. <transit/>");
+}
+
+TEST(SceneLoader, SecondPlannerParamNamesTheFirstLine)
+{
+    const std::string planner =
+        "\n  <planner type=\"mopl\">\n    <param name=\"connect_step\" value=\"0.05\"/>\n"
+        "    <param name=\"connect_step\" value=\"0.1\"/>\n  </planner>";
+    expectError(replaced(13, validLines().at(12) + planner), 16,
+                "second <param> 'connect_step' (first at line 15)");
+}
+
+TEST(SceneLoader, TimeLimitMustBePositive)
+{
+    expectError(replaced(1, R"(<scene name="inline" time_limit="0">)"), 1,
+                "attribute 'time_limit' of <scene> must be positive, got 0");
+    EXPECT_DOUBLE_EQ(parseLines(replaced(1, R"(<scene name="inline" time_limit="0.001">)")).timeLimit, 0.001);
+}
+
+TEST(SceneLoader, ZeroTolerancesAreAcceptedAndNegativeOnesRejected)
+{
+    // tolerances may be 0 (exact goals), not below
+    const Scene scene = parseLines(
+        replaced(11, R"(    <object name="obj1" xyz="1 * *" yaw="0" tolerance="0" yaw_tolerance="0"/>)"));
+    EXPECT_EQ(scene.objectGoals.at(0).positionTolerance, 0.0);
+    EXPECT_EQ(scene.objectGoals.at(0).yawTolerance, 0.0);
+    expectError(replaced(11, R"(    <object name="obj1" xyz="1 * *" yaw="0" yaw_tolerance="-1deg"/>)"), 11,
+                "attribute 'yaw_tolerance' of <object> must not be negative, got -1deg");
+    std::vector<std::string> lines = validLines();
+    lines.at(10) += "\n    <robot joints=\"0 0\" tolerance=\"0\"/>";
+    EXPECT_EQ(parseLines(lines).robotGoal.tolerance, 0.0);
+    lines.at(10) = validLines().at(10) + "\n    <robot joints=\"0 0\" tolerance=\"-0.001\"/>";
+    expectError(lines, 12, "attribute 'tolerance' of <robot> must not be negative, got -0.001");
+}

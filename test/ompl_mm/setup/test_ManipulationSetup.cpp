@@ -254,3 +254,56 @@ TEST(ManipulationSetupInput, RobotFaultsAreReportedAtTheRobotLine)
     EXPECT_TRUE(startsWith(what, scene.robot.where.str() + ": ")) << what;
     EXPECT_TRUE(contains(what, "unit_no_such_robot.urdf")) << what;
 }
+
+TEST(ManipulationSetupInput, StartJointOutsideLimitsNamesTheValueAndTheLimits)
+{
+    // the start state's check reports the joint, its value and its limits, at the start line
+    Scene scene = mobileBlockedScene();
+    scene.robotStart = {-2.6, 1.9};
+    const std::string what = setupError(scene);
+    EXPECT_EQ(what,
+              scene.robotStartWhere.str() +
+                  ": the start state is invalid: joint 'x' = -2.600000 is outside [-2.500000, 2.500000]");
+}
+
+TEST(ManipulationSetupInput, MalformedUrdfIsReportedAtTheRobotLineWithTheUrdfsOwnPlace)
+{
+    // a URDF fault carries the URDF's file:line after the scene's robot line
+    Scene scene = mobileBlockedScene();
+    scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/robots/bad_mesh.urdf";
+    const std::string what = setupError(scene);
+    EXPECT_TRUE(startsWith(what, scene.robot.where.str() + ": " + scene.robot.urdfFile + ":5: ")) << what;
+    EXPECT_TRUE(contains(what, "mesh collision geometry is not supported")) << what;
+}
+
+TEST(ManipulationSetupInput, ObjectStartJustWithinTheRestToleranceIsAccepted)
+{
+    // 1e-4 is the rest tolerance: 0.9e-4 above the floor rests, 1.1e-4 does not
+    Scene scene = mobileBlockedScene();
+    scene.objects[1].start.position.z() = 0.9e-4;
+    EXPECT_EQ(setupError(scene), "");
+    scene.objects[1].start.position.z() = 1.1e-4;
+    EXPECT_EQ(setupError(scene),
+              scene.objects[1].where.str() + ": object 'obj2' starts on no support surface");
+}
+
+TEST(ManipulationSetupInput, AllowedCollisionWithAnUnknownLinkIsNamed)
+{
+    // an <allow_collision> pair must name links of the robot
+    Scene scene = mobileBlockedScene();
+    scene.robot.allowedCollisions.emplace_back("body", "gripper");
+    const std::string what = setupError(scene);
+    EXPECT_TRUE(contains(what, "has no link 'gripper'")) << what;
+}
+
+TEST(ManipulationSetup, ConnectStepLongerThanAnObjectsYawRangeIsAccepted)
+{
+    // the yaw subspace spans 2 pi: a step of 7 checks it once per motion instead of throwing half-set
+    ManipulationSetup setup(mobileBlockedScene());
+    ASSERT_TRUE(setup.getPlanner()->params().setParam("connect_step", "0.5"));
+    EXPECT_TRUE(setup.getPlanner()->params().setParam("connect_step", "1"));
+    EXPECT_EQ(setup.mopl()->getConnectStep(), 1.0);
+    setup.mopl()->setConnectStep(7.0);
+    EXPECT_EQ(setup.mopl()->getConnectStep(), 7.0);
+    EXPECT_NEAR(segmentsOfAMetreLongMotion(setup), 1.0, 1.0);
+}
