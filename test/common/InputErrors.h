@@ -1,25 +1,40 @@
-// Test helpers shared by the tests of both libraries: the message of an InputError, and text checks.
+// Test helpers shared by the tests of all libraries: the message of an exception, and text checks.
 #pragma once
 
 #include "ompl_core/io/InputError.h"
 
 #include <string>
+#include <utility>
 
 namespace ompl_core::test
 {
-    /** The message of the InputError that f() throws, or "" when it throws none. */
-    template <typename F>
-    std::string inputErrorOf(F &&f)
+    /** The message of the Error that f() throws, or "" when it throws none. */
+    template <typename Error, typename F>
+    std::string messageOf(F &&f)
     {
         try
         {
             f();
         }
-        catch (const InputError &e)
+        catch (const Error &e)
         {
             return e.what();
         }
         return "";
+    }
+
+    /** The message of the InputError that f() throws, or "" when it throws none. */
+    template <typename F>
+    std::string inputErrorOf(F &&f)
+    {
+        return messageOf<InputError>(std::forward<F>(f));
+    }
+
+    /** The message of the ompl::Exception (InputError included) that f() throws, or "". */
+    template <typename F>
+    std::string exceptionOf(F &&f)
+    {
+        return messageOf<ompl::Exception>(std::forward<F>(f));
     }
 
     /** True when text begins with prefix. */

@@ -267,20 +267,6 @@ TEST(MOPL, RestartsClearTheTreesAndStillSolve)
 
 namespace
 {
-    /** The message of the ompl::Exception that f() throws, or "" when it throws none. */
-    template <typename F>
-    std::string omplErrorOf(F &&f)
-    {
-        try
-        {
-            f();
-        }
-        catch (const ompl::Exception &e)
-        {
-            return e.what();
-        }
-        return "";
-    }
 }  // namespace
 
 TEST(MOPLParameters, StepsMustBePositiveAndFiniteAndSmallOnesAreAccepted)
@@ -288,28 +274,30 @@ TEST(MOPLParameters, StepsMustBePositiveAndFiniteAndSmallOnesAreAccepted)
     // connect_step and vertex_step reject 0, negatives, infinity and NaN, naming the value
     ManipulationSetup setup(mobileBlockedScene());
     MOPL &mopl = *setup.mopl();
-    EXPECT_EQ(omplErrorOf([&] { mopl.setConnectStep(0.0); }),
+    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setConnectStep(0.0); }),
               "MOPL: connect_step must be positive, got 0.000000");
-    EXPECT_EQ(omplErrorOf([&] { mopl.setConnectStep(-0.05); }),
+    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setConnectStep(-0.05); }),
               "MOPL: connect_step must be positive, got -0.050000");
-    EXPECT_EQ(omplErrorOf([&] { mopl.setConnectStep(std::numeric_limits<double>::infinity()); }),
-              "MOPL: connect_step must be positive, got inf");
-    EXPECT_TRUE(startsWith(omplErrorOf([&] { mopl.setConnectStep(std::nan("")); }),
+    EXPECT_EQ(
+        ompl_core::test::exceptionOf([&] { mopl.setConnectStep(std::numeric_limits<double>::infinity()); }),
+        "MOPL: connect_step must be positive, got inf");
+    EXPECT_TRUE(startsWith(ompl_core::test::exceptionOf([&] { mopl.setConnectStep(std::nan("")); }),
                            "MOPL: connect_step must be positive, got "));
     EXPECT_EQ(mopl.getConnectStep(), 0.05) << "a rejected value leaves the scene's";
-    EXPECT_EQ(omplErrorOf([&] { mopl.setConnectStep(1e-6); }), "");
+    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setConnectStep(1e-6); }), "");
     EXPECT_EQ(mopl.getConnectStep(), 1e-6);
 
-    EXPECT_EQ(omplErrorOf([&] { mopl.setVertexStep(0.0); }),
+    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setVertexStep(0.0); }),
               "MOPL: vertex_step must be positive, got 0.000000");
-    EXPECT_EQ(omplErrorOf([&] { mopl.setVertexStep(-1.0); }),
+    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setVertexStep(-1.0); }),
               "MOPL: vertex_step must be positive, got -1.000000");
-    EXPECT_EQ(omplErrorOf([&] { mopl.setVertexStep(std::numeric_limits<double>::infinity()); }),
-              "MOPL: vertex_step must be positive, got inf");
-    EXPECT_TRUE(startsWith(omplErrorOf([&] { mopl.setVertexStep(std::nan("")); }),
+    EXPECT_EQ(
+        ompl_core::test::exceptionOf([&] { mopl.setVertexStep(std::numeric_limits<double>::infinity()); }),
+        "MOPL: vertex_step must be positive, got inf");
+    EXPECT_TRUE(startsWith(ompl_core::test::exceptionOf([&] { mopl.setVertexStep(std::nan("")); }),
                            "MOPL: vertex_step must be positive, got "));
     EXPECT_EQ(mopl.getVertexStep(), 0.35) << "a rejected value leaves the scene's";
-    EXPECT_EQ(omplErrorOf([&] { mopl.setVertexStep(1e-6); }), "");
+    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setVertexStep(1e-6); }), "");
     EXPECT_EQ(mopl.getVertexStep(), 1e-6);
 }
 
@@ -322,9 +310,9 @@ TEST(MOPLParameters, ProbabilitiesMustLieInTheClosedUnitInterval)
     for (const std::string name : {"object_sample_probability", "undefined_probability",
                                    "start_value_probability", "random_robot_probability"})
     {
-        EXPECT_EQ(omplErrorOf([&] { params.setParam(name, "-0.01"); }),
+        EXPECT_EQ(ompl_core::test::exceptionOf([&] { params.setParam(name, "-0.01"); }),
                   "MOPL: " + name + " must be in [0, 1], got -0.010000");
-        EXPECT_EQ(omplErrorOf([&] { params.setParam(name, "1.01"); }),
+        EXPECT_EQ(ompl_core::test::exceptionOf([&] { params.setParam(name, "1.01"); }),
                   "MOPL: " + name + " must be in [0, 1], got 1.010000");
         for (const char *inside : {"0", "1"})
         {
@@ -343,7 +331,7 @@ TEST(MOPLParameters, UndefinedAndStartValueProbabilitiesMayNotSumAboveOne)
         ManipulationSetup setup(mobileBlockedScene());
         EXPECT_TRUE(setup.mopl()->params().setParam("undefined_probability", undefined));
         EXPECT_TRUE(setup.mopl()->params().setParam("start_value_probability", startValue));
-        return omplErrorOf([&] { setup.setup(); });
+        return ompl_core::test::exceptionOf([&] { setup.setup(); });
     };
     EXPECT_EQ(setupError("0.5", "0.5"), "");
     EXPECT_EQ(setupError("0.75", "0.25"), "");
@@ -358,7 +346,8 @@ TEST(MOPLParameters, SetupWithoutPrimitivesThrows)
     // a planner made without primitives (or emptied) cannot plan
     ManipulationSetup setup(mobileBlockedScene());
     setup.mopl()->setPrimitives({});
-    EXPECT_EQ(omplErrorOf([&] { setup.setup(); }), "MOPL: has no primitives: call setPrimitives() first");
+    EXPECT_EQ(ompl_core::test::exceptionOf([&] { setup.setup(); }),
+              "MOPL: has no primitives: call setPrimitives() first");
 }
 
 TEST(MOPLParameters, NeedsAManipulationStateSpace)
@@ -367,5 +356,6 @@ TEST(MOPLParameters, NeedsAManipulationStateSpace)
     auto space = std::make_shared<ompl::base::RealVectorStateSpace>(2);
     space->setName("plane");
     auto si = std::make_shared<ompl::base::SpaceInformation>(space);
-    EXPECT_EQ(omplErrorOf([&] { MOPL mopl(si, {}); }), "MOPL: needs a ManipulationStateSpace, got plane");
+    EXPECT_EQ(ompl_core::test::exceptionOf([&] { MOPL mopl(si, {}); }),
+              "MOPL: needs a ManipulationStateSpace, got plane");
 }

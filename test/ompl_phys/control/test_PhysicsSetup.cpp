@@ -361,3 +361,80 @@ TEST(PhysicsSetup, GoalCoveredByAFixedBodyIsRejected)
     EXPECT_TRUE(startsWith(message, "test.xml:15: ")) << message;
     EXPECT_TRUE(contains(message, "wall")) << message;
 }
+
+TEST(PhysicsSetup, StartPenetrationJustWithinAndBeyondTheTolerance)
+{
+    // the free cube's north face is at y = -0.3; the robot (radius 0.08) 1.5 mm and 2.5 mm into it, against
+    // a tolerance of 2 mm (soft contacts settle that deep)
+    EXPECT_EQ(setupErrorWithLine(6, R"(  <robot name="robot" radius="0.08" mass="1" start="0.6 -0.2215"/>)"),
+              "");
+    const std::string message =
+        setupErrorWithLine(6, R"(  <robot name="robot" radius="0.08" mass="1" start="0.6 -0.2225"/>)");
+    EXPECT_TRUE(startsWith(message, "test.xml:6: bodies overlap at the start (0.0025")) << message;
+    EXPECT_TRUE(contains(message, " m deep)")) << message;
+}
+
+TEST(PhysicsSetup, StartTouchingTheConstrainedBodyJustInsideAndOutsideItsStrip)
+{
+    // the slider's strip is |x| <= 0.06; the robot touches its south face (y = -0.1) 0.5 mm deep
+    EXPECT_EQ(
+        setupErrorWithLine(6, R"(  <robot name="robot" radius="0.08" mass="1" start="0.059 -0.1795"/>)"), "");
+    EXPECT_EQ(
+        setupErrorWithLine(6, R"(  <robot name="robot" radius="0.08" mass="1" start="-0.059 -0.1795"/>)"),
+        "");
+    const std::string message =
+        setupErrorWithLine(6, R"(  <robot name="robot" radius="0.08" mass="1" start="0.061 -0.1795"/>)");
+    EXPECT_EQ(message, "test.xml:10: the robot starts touching 'slider', which it must not touch");
+}
+
+TEST(PhysicsSetup, StartJustTouchingOrClearOfAFixedBody)
+{
+    // the wall's south face is at y = 0.7: the robot 0.5 mm into it, or 0.5 mm away
+    EXPECT_EQ(setupErrorWithLine(6, R"(  <robot name="robot" radius="0.08" mass="1" start="0 0.6205"/>)"),
+              "test.xml:7: the robot starts touching 'wall', which it must not touch");
+    EXPECT_EQ(setupErrorWithLine(6, R"(  <robot name="robot" radius="0.08" mass="1" start="0 0.6195"/>)"),
+              "");
+}
+
+TEST(PhysicsSetup, StartInsideAFixedPrismIsRejected)
+{
+    // the robot wholly inside the wedge (inradius about 0.099 m > 0.08 m)
+    const std::string message =
+        setupErrorWithLine(6, R"(  <robot name="robot" radius="0.08" mass="1" start="-0.6 0.3"/>)");
+    EXPECT_EQ(message, "test.xml:8: the robot starts touching 'wedge', which it must not touch");
+}
+
+TEST(PhysicsSetup, StartBreakingARuleOfAScene)
+{
+    // the loader rejects such starts; a scene built or changed in code reaches the setup's own check, which
+    // names the robot's line
+    PhysicsScene scene = smallScene();
+    scene.robot.start.x() = 1.001;  // the robot region ends at x = 1
+    EXPECT_EQ(inputErrorOf([&] { PhysicsSetup setup(scene); }),
+              "small.xml:6: the start breaks a rule: outside_region");
+    scene.robot.start.x() = 0.999;
+    scene.robot.start.y() = 0.0;
+    EXPECT_EQ(inputErrorOf([&] { PhysicsSetup setup(scene); }), "");
+
+    scene = smallScene();
+    scene.bodies[scene.bodyIndex("loose")].start.translation().x() = 1.201;  // the body region ends at 1.2
+    EXPECT_EQ(inputErrorOf([&] { PhysicsSetup setup(scene); }),
+              "small.xml:6: the start breaks a rule: outside_region");
+    scene.bodies[scene.bodyIndex("loose")].start.translation().x() = 1.199;
+    EXPECT_EQ(inputErrorOf([&] { PhysicsSetup setup(scene); }), "");
+}
+
+TEST(PhysicsSetup, GoalJustCoveredOrFreeOfAFixedBody)
+{
+    // the wall's south face 79 mm or 81 mm north of the goal centre (0.8, -0.8); the robot's radius is 80 mm
+    EXPECT_EQ(
+        setupErrorWithLine(
+            7,
+            R"(  <body name="wall" kind="fixed"><origin xyz="0.8 -0.621 0.1"/><box size="1 0.2 0.2"/></body>)"),
+        "test.xml:15: the goal cannot be reached: fixed body 'wall' covers its centre");
+    EXPECT_EQ(
+        setupErrorWithLine(
+            7,
+            R"(  <body name="wall" kind="fixed"><origin xyz="0.8 -0.619 0.1"/><box size="1 0.2 0.2"/></body>)"),
+        "");
+}

@@ -5,6 +5,8 @@
 #include "ompl_phys/common/PhysicsTestSupport.h"
 #include "ompl_phys/world/PhysicsWorld.h"
 
+#include <ompl/util/Exception.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -328,4 +330,175 @@ TEST(ManipulationKnowledge, FixedBodyOnTheGoal)
     EXPECT_TRUE(ManipulationKnowledge(shared(scene)).fixedBodiesOnGoal().empty());
     scene.bodies[wall].start.translation().y() = -0.65;  // 0.05 m from the goal
     EXPECT_EQ(ManipulationKnowledge(shared(scene)).fixedBodiesOnGoal(), std::vector<std::size_t>{wall});
+}
+
+// --- each rule broken by a little, and kept by a little --------------------------------------------------
+
+TEST(ManipulationKnowledge, NeedsAScene)
+{
+    try
+    {
+        ManipulationKnowledge knowledge(nullptr);
+        ADD_FAILURE() << "no exception for a null scene";
+    }
+    catch (const ompl::Exception &e)
+    {
+        EXPECT_EQ(std::string(e.what()), "ManipulationKnowledge: needs a scene, got none");
+    }
+}
+
+TEST_F(SmallSceneKnowledge, TouchingTheConstrainedBodyJustInsideAndOutsideItsStrip)
+{
+    // the strip is |x| <= 0.06 (push axis = world y); the robot touches the slider's south face
+    BodyStates states = start_;
+    for (double x : {-0.0599, 0.0599})
+    {
+        states[0].position = Eigen::Vector3d(x, -0.18, 0.08);
+        EXPECT_EQ(knowledge_.checkTouches({slider_}, states), Violation::None) << x;
+    }
+    for (double x : {-0.0601, 0.0601})
+    {
+        states[0].position = Eigen::Vector3d(x, -0.18, 0.08);
+        EXPECT_EQ(knowledge_.checkTouches({slider_}, states), Violation::TouchedOutsideRegion) << x;
+    }
+    // the first broken rule counts: a fixed body after it is not reached
+    EXPECT_EQ(knowledge_.checkTouches({loose_, slider_, wall_}, states), Violation::TouchedOutsideRegion);
+}
+
+TEST_F(SmallSceneKnowledge, RobotJustInsideAndOutsideItsRegion)
+{
+    // robot region: [-1, 1]^2, edges included
+    BodyStates states = start_;
+    for (const Eigen::Vector2d &inside : {Eigen::Vector2d(-0.999, -0.8), Eigen::Vector2d(-0.8, -0.999),
+                                          Eigen::Vector2d(-1.0, -1.0), Eigen::Vector2d(0.999, -0.999)})
+    {
+        states[0].position.head<2>() = inside;
+        EXPECT_EQ(knowledge_.checkStates(states), Violation::None) << inside.transpose();
+    }
+    for (const Eigen::Vector2d &outside : {Eigen::Vector2d(-1.001, -0.8), Eigen::Vector2d(-0.8, -1.001),
+                                           Eigen::Vector2d(1.001, -0.8), Eigen::Vector2d(-0.8, 1.001)})
+    {
+        states[0].position.head<2>() = outside;
+        EXPECT_EQ(knowledge_.checkStates(states), Violation::OutsideRegion) << outside.transpose();
+    }
+}
+
+TEST_F(SmallSceneKnowledge, BodiesJustInsideAndOutsideTheirRegion)
+{
+    // body region: [-1.2, 1.2]^2
+    BodyStates states = start_;
+    states[looseMoving_].position.x() = 1.199;
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::None);
+    states[looseMoving_].position.y() = -1.201;
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::OutsideRegion);
+    // the slider along its axis (world y), out of the region: the region is checked, not the axis
+    states = start_;
+    states[sliderMoving_].position.y() = 1.199;
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::None);
+    states[sliderMoving_].position.y() = 1.201;
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::OutsideRegion);
+}
+
+TEST_F(SmallSceneKnowledge, RobotAngularSpeedLimit)
+{
+    const double limit = scene_.limits.maxAngularSpeed;
+    BodyStates states = start_;
+    states[0].angularVelocity = Eigen::Vector3d(limit, -limit, 0.99 * limit);
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::None);
+    states[0].angularVelocity.x() = 1.001 * limit;
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::TooFast);
+    states[0].angularVelocity.x() = limit;
+    states[0].angularVelocity.y() = -1.001 * limit;
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::TooFast);
+}
+
+TEST_F(SmallSceneKnowledge, RobotLinearSpeedLimitPerComponent)
+{
+    const double limit = scene_.limits.maxRobotSpeed;
+    BodyStates states = start_;
+    // each component within the limit, though the speed (the norm) is above it
+    states[0].linearVelocity = Eigen::Vector3d(0.999 * limit, -0.999 * limit, 0.0);
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::None);
+    states[0].linearVelocity.x() = 1.001 * limit;
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::TooFast);
+    states[0].linearVelocity.x() = -1.001 * limit;
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::TooFast);
+}
+
+TEST_F(SmallSceneKnowledge, BodySpeedLimitsJustInsideAndOutside)
+{
+    const PlanningLimits &limits = scene_.limits;
+    for (std::size_t moving : {looseMoving_, sliderMoving_})
+    {
+        SCOPED_TRACE(moving);
+        BodyStates states = start_;
+        states[moving].linearVelocity = Eigen::Vector3d(0.999, -0.999, 0.999) * limits.maxBodySpeed;
+        states[moving].angularVelocity = Eigen::Vector3d(-0.999, 0.999, 0.999) * limits.maxAngularSpeed;
+        EXPECT_EQ(knowledge_.checkStates(states), Violation::None);
+        for (int k = 0; k < 3; ++k)
+        {
+            BodyStates fast = states;
+            fast[moving].linearVelocity[k] = -1.001 * limits.maxBodySpeed;
+            EXPECT_EQ(knowledge_.checkStates(fast), Violation::TooFast) << "linear " << k;
+            fast = states;
+            fast[moving].angularVelocity[k] = 1.001 * limits.maxAngularSpeed;
+            EXPECT_EQ(knowledge_.checkStates(fast), Violation::TooFast) << "angular " << k;
+        }
+    }
+}
+
+TEST_F(SmallSceneKnowledge, EveryNonFiniteNumberIsCaught)
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    for (std::size_t moving : {std::size_t{0}, looseMoving_, sliderMoving_})
+    {
+        SCOPED_TRACE(moving);
+        BodyStates states = start_;
+        states[moving].orientation.coeffs().w() = nan;
+        EXPECT_EQ(knowledge_.checkStates(states), Violation::NotFinite);
+        states = start_;
+        states[moving].angularVelocity.y() = -inf;
+        EXPECT_EQ(knowledge_.checkStates(states), Violation::NotFinite);
+        states = start_;
+        states[moving].position.z() = nan;
+        EXPECT_EQ(knowledge_.checkStates(states), Violation::NotFinite);
+        states = start_;
+        states[moving].linearVelocity.x() = inf;
+        EXPECT_EQ(knowledge_.checkStates(states), Violation::NotFinite);
+    }
+    // the largest finite numbers are finite: another rule decides
+    BodyStates states = start_;
+    states[looseMoving_].linearVelocity.x() = std::numeric_limits<double>::max();
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::TooFast);
+}
+
+TEST_F(SmallSceneKnowledge, GoalOccupantJustInsideAndOutsideTheGoalsReach)
+{
+    // the goal (0.8, -0.8), radius 0.1, robot radius 0.08: a body is an occupant when its footprint comes
+    // within 0.18 of the goal centre; the loose cube's east face is at x + 0.1
+    ASSERT_DOUBLE_EQ(scene_.goal.radius + scene_.robot.radius, 0.18);
+    BodyStates states = start_;
+    states[looseMoving_].position.head<2>() = Eigen::Vector2d(0.8 - 0.18 - 0.1 + 0.001, -0.8);
+    EXPECT_EQ(knowledge_.goalOccupants(states), std::vector<std::size_t>{looseMoving_});
+    states[looseMoving_].position.x() = 0.8 - 0.18 - 0.1 - 0.001;
+    EXPECT_TRUE(knowledge_.goalOccupants(states).empty());
+    // from the north, and the slider as well
+    states = start_;
+    states[sliderMoving_].position.head<2>() = Eigen::Vector2d(0.8, -0.8 + 0.18 + 0.1 - 0.001);
+    EXPECT_EQ(knowledge_.goalOccupants(states), std::vector<std::size_t>{sliderMoving_});
+    states[sliderMoving_].position.y() = -0.8 + 0.18 + 0.1 + 0.001;
+    EXPECT_TRUE(knowledge_.goalOccupants(states).empty());
+}
+
+TEST(ManipulationKnowledge, FixedBodyJustOnAndOffTheGoal)
+{
+    // the wall (1 m x 0.2 m) just north of the goal (0.8, -0.8): its south face is at y - 0.1
+    PhysicsScene scene = smallScene();
+    const std::size_t wall = scene.bodyIndex("wall");
+    const double reach = scene.robot.radius;  // a fixed body covers the goal within the robot's radius
+    scene.bodies[wall].start.translation() = Eigen::Vector3d(0.8, -0.8 + 0.1 + reach - 0.001, 0.1);
+    EXPECT_EQ(ManipulationKnowledge(shared(scene)).fixedBodiesOnGoal(), std::vector<std::size_t>{wall});
+    scene.bodies[wall].start.translation().y() = -0.8 + 0.1 + reach + 0.001;
+    EXPECT_TRUE(ManipulationKnowledge(shared(scene)).fixedBodiesOnGoal().empty());
 }

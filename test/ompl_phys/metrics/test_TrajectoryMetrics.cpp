@@ -355,3 +355,46 @@ TEST(TrajectoryMetrics, RejectsNonFiniteForce)
     t.moves[1].force.x() = std::numeric_limits<double>::quiet_NaN();
     EXPECT_NE(rejection(t).find("moves[1].force"), std::string::npos);
 }
+
+TEST(TrajectoryMetrics, RejectionsNameTheValue)
+{
+    RobotTrajectory t = valid();
+    t.stepDuration = -0.5;
+    EXPECT_EQ(rejection(t),
+              "computeTrajectoryMetrics: trajectory.stepDuration is -0.5, must be finite and > 0");
+    t = valid();
+    t.positions[2] = Eigen::Vector3d(1.5, std::numeric_limits<double>::infinity(), 0.25);
+    EXPECT_EQ(rejection(t),
+              "computeTrajectoryMetrics: trajectory.positions[2] is (1.5, inf, 0.25), must be finite");
+    t = valid();
+    t.moves[0].force = Eigen::Vector3d(std::numeric_limits<double>::quiet_NaN(), 2.0, 0.0);
+    EXPECT_EQ(rejection(t),
+              "computeTrajectoryMetrics: trajectory.moves[0].force is (nan, 2, 0), must be finite");
+    t = valid();
+    t.moves[0].steps = 6;
+    EXPECT_EQ(rejection(t),
+              "computeTrajectoryMetrics: trajectory.moves[0].steps is 6: the moves' steps exceed "
+              "positions.size() - 1 = 5");
+    t = valid();
+    t.moves[1].steps = 2;
+    EXPECT_EQ(rejection(t),
+              "computeTrajectoryMetrics: the moves' steps add up to 4, but positions.size() - 1 is 5");
+}
+
+TEST(TrajectoryMetrics, AcceptsValuesJustInsideTheChecks)
+{
+    EXPECT_EQ(rejection(valid()), "");
+    // the smallest positive step
+    RobotTrajectory t = valid();
+    t.stepDuration = std::numeric_limits<double>::denorm_min();
+    EXPECT_EQ(rejection(t), "");
+    // the largest finite positions and forces
+    t = valid();
+    t.positions[1].x() = std::numeric_limits<double>::max();
+    t.moves[0].force.y() = -std::numeric_limits<double>::max();
+    EXPECT_EQ(rejection(t), "");
+    // moves of one step each, adding up exactly
+    t = valid();
+    t.moves = split(Eigen::Vector3d(2.0, 0.0, 0.0), {1, 1, 1, 1, 1});
+    EXPECT_EQ(rejection(t), "");
+}

@@ -408,3 +408,480 @@ TEST(PhysicsSceneLoader, FileErrorsNameThePath)
     EXPECT_TRUE(startsWith(message, path + ":" + std::to_string(line) + ": ")) << message;
     EXPECT_TRUE(contains(message, "carpet")) << message;
 }
+
+// --- every range: the value just outside is rejected with file:line, attribute and value; just inside is
+// --- accepted ---------------------------------------------------------------------------------------------
+
+namespace
+{
+    /** Parses lines as "test.xml", expecting no error. */
+    PhysicsScene accepted(const std::vector<std::string> &lines)
+    {
+        PhysicsScene scene;
+        const std::string message =
+            inputErrorOf([&] { scene = parsePhysicsScene(joinLines(lines), "test.xml"); });
+        EXPECT_EQ(message, "");
+        return scene;
+    }
+
+    /** The small scene with <simulation> (line 2) carrying only these attributes. */
+    std::vector<std::string> simulation(const std::string &attributes)
+    {
+        return replaced(2, "  <simulation " + attributes + "/>");
+    }
+
+    /** The small scene with <materials> (line 3) carrying only these attributes. */
+    std::vector<std::string> materials(const std::string &attributes)
+    {
+        return replaced(3, "  <materials " + attributes + "/>");
+    }
+
+    /** The small scene with <limits> (line 4) carrying its regions and these attributes. */
+    std::vector<std::string> limits(const std::string &attributes)
+    {
+        return replaced(
+            4, R"(  <limits robot_region="-1 1 -1 1" body_region="-1.2 1.2 -1.2 1.2" )" + attributes + "/>");
+    }
+
+    /** The small scene with the free cube (line 9) made of these origin, shape and extra attributes. */
+    std::vector<std::string> looseCube(const std::string &origin, const std::string &shape,
+                                       const std::string &bodyAttributes = R"(kind="free" mass="0.5")")
+    {
+        return replaced(9, R"(  <body name="loose" )" + bodyAttributes + "><origin xyz=\"" + origin + "\"/>" +
+                               shape + "</body>");
+    }
+
+    /** The small scene with the slider's <push> (line 13) carrying these attributes. */
+    std::vector<std::string> push(const std::string &attributes)
+    {
+        return replaced(13, "    <push " + attributes + "/>");
+    }
+
+    const std::string PUSH_AXIS = R"(axis="1 0 0" )";
+}  // namespace
+
+TEST(PhysicsSceneLoader, ErpInItsRange)
+{
+    expectError(simulation(R"(erp="0")"), 2, "erp must be in [1e-06, 1], got 0");
+    expectError(simulation(R"(erp="9e-7")"), 2, "erp must be in [1e-06, 1], got 9e-7");
+    expectError(simulation(R"(erp="1.000001")"), 2, "erp must be in [1e-06, 1], got 1.000001");
+    EXPECT_EQ(accepted(simulation(R"(erp="1e-6")")).contact.erp, 1e-6);
+    EXPECT_EQ(accepted(simulation(R"(erp="1")")).contact.erp, 1.0);
+}
+
+TEST(PhysicsSceneLoader, CfmInItsRange)
+{
+    expectError(simulation(R"(cfm="-1e-9")"), 2, "cfm must be in [0, 1], got -1e-9");
+    expectError(simulation(R"(cfm="1.000001")"), 2, "cfm must be in [0, 1], got 1.000001");
+    EXPECT_EQ(accepted(simulation(R"(cfm="0")")).contact.cfm, 0.0);
+    EXPECT_EQ(accepted(simulation(R"(cfm="1")")).contact.cfm, 1.0);
+}
+
+TEST(PhysicsSceneLoader, MaxContactsAndIterationsAreWholeNumbersInTheirRanges)
+{
+    struct Count
+    {
+        const char *attribute;
+        unsigned int low, high;
+        std::vector<const char *> bad;
+        unsigned int ContactParameters::*field;
+    };
+    for (const Count &c :
+         {Count{"max_contacts", 1, 16, {"0", "17", "2.5"}, &ContactParameters::maxContacts},
+          Count{"iterations", 1, 1000, {"0", "1001", "20.5"}, &ContactParameters::iterations}})
+    {
+        const std::string range = " must be a whole number in [" + std::to_string(c.low) + ", " +
+                                  std::to_string(c.high) + "], got ";
+        for (const char *bad : c.bad)
+            expectError(simulation(std::string(c.attribute) + "=\"" + bad + "\""), 2,
+                        c.attribute + range + bad);
+        for (unsigned int good : {c.low, c.high})
+            EXPECT_EQ(
+                accepted(simulation(std::string(c.attribute) + "=\"" + std::to_string(good) + "\"")).contact.*
+                    c.field,
+                good);
+    }
+}
+
+TEST(PhysicsSceneLoader, SubstepsIsAWholeNumberInItsRange)
+{
+    expectError(simulation(R"(substeps="0")"), 2, "substeps must be a whole number in [1, 1000], got 0");
+    expectError(simulation(R"(substeps="1001")"), 2,
+                "substeps must be a whole number in [1, 1000], got 1001");
+    EXPECT_EQ(accepted(simulation(R"(substeps="1")")).contact.substeps, 1u);
+    EXPECT_EQ(accepted(simulation(R"(substeps="1000")")).contact.substeps, 1000u);
+}
+
+TEST(PhysicsSceneLoader, GravityIsAnyFiniteNumber)
+{
+    expectError(simulation(R"(gravity="down")"), 2, "malformed number 'down' in attribute 'gravity'");
+    expectError(simulation(R"(gravity="-9.81 0")"), 2,
+                "attribute 'gravity' of <simulation> needs 1 value, got 2");
+    EXPECT_EQ(accepted(simulation(R"(gravity="0")")).contact.gravity, 0.0);
+    EXPECT_EQ(accepted(simulation(R"(gravity="3.7")")).contact.gravity, 3.7);
+}
+
+TEST(PhysicsSceneLoader, FrictionIsNotNegative)
+{
+    expectError(materials(R"(robot_floor="-0.001")"), 3,
+                "attribute 'robot_floor' of <materials> must not be negative, got -0.001");
+    expectError(materials(R"(default="-0.001")"), 3,
+                "attribute 'default' of <materials> must not be negative, got -0.001");
+    const PhysicsScene zero = accepted(materials(R"(robot_floor="0" default="0")"));
+    EXPECT_EQ(zero.materials.robotFloor, 0.0);
+    EXPECT_EQ(zero.materials.defaultMu, 0.0);
+    expectError(materials(R"(rubber="1")"), 3, "unknown attribute 'rubber' on <materials>");
+}
+
+TEST(PhysicsSceneLoader, SpeedsForceAndStepArePositive)
+{
+    for (const char *attribute :
+         {"max_robot_speed", "max_body_speed", "max_angular_speed", "max_force", "step"})
+    {
+        SCOPED_TRACE(attribute);
+        const std::string name = attribute;
+        expectError(limits(name + "=\"0\""), 4,
+                    "attribute '" + name + "' of <limits> must be positive, got 0");
+        expectError(limits(name + "=\"-1\""), 4,
+                    "attribute '" + name + "' of <limits> must be positive, got -1");
+        accepted(limits(name + "=\"1e-9\""));
+    }
+    const PhysicsScene scene = accepted(limits(
+        R"(max_robot_speed="1e-9" max_body_speed="2e-9" max_angular_speed="3e-9" max_force="4e-9" step="5e-9")"));
+    EXPECT_EQ(scene.limits.maxRobotSpeed, 1e-9);
+    EXPECT_EQ(scene.limits.maxBodySpeed, 2e-9);
+    EXPECT_EQ(scene.limits.maxAngularSpeed, 3e-9);
+    EXPECT_EQ(scene.limits.maxForce, 4e-9);
+    EXPECT_EQ(scene.limits.stepSize, 5e-9);
+}
+
+TEST(PhysicsSceneLoader, ControlStepsInTheirRangeAndMaxNotBelowMin)
+{
+    for (const char *attribute : {"min_steps", "max_steps"})
+    {
+        SCOPED_TRACE(attribute);
+        const std::string name = attribute;
+        expectError(limits(name + "=\"0\""), 4, name + " must be a whole number in [1, 100000], got 0");
+        expectError(limits(name + "=\"100001\""), 4,
+                    name + " must be a whole number in [1, 100000], got 100001");
+        expectError(limits(name + "=\"1.5\""), 4, name + " must be a whole number in [1, 100000], got 1.5");
+    }
+    expectError(limits(R"(min_steps="5" max_steps="4")"), 4, "max_steps (4) must not be below min_steps (5)");
+    // the default max_steps (10) is below a min_steps of 11
+    expectError(limits(R"(min_steps="11")"), 4, "max_steps (10) must not be below min_steps (11)");
+    const PhysicsScene equal = accepted(limits(R"(min_steps="5" max_steps="5")"));
+    EXPECT_EQ(equal.limits.minControlSteps, 5u);
+    EXPECT_EQ(equal.limits.maxControlSteps, 5u);
+    const PhysicsScene widest = accepted(limits(R"(min_steps="1" max_steps="100000")"));
+    EXPECT_EQ(widest.limits.maxControlSteps, 100000u);
+    EXPECT_EQ(accepted(limits(R"(min_steps="100000" max_steps="100000")")).limits.minControlSteps, 100000u);
+}
+
+TEST(PhysicsSceneLoader, GoalBiasInItsRange)
+{
+    expectError(limits(R"(goal_bias="-0.000001")"), 4, "goal_bias must be in [0, 1], got -0.000001");
+    expectError(limits(R"(goal_bias="1.000001")"), 4, "goal_bias must be in [0, 1], got 1.000001");
+    EXPECT_EQ(accepted(limits(R"(goal_bias="0")")).limits.goalBias, 0.0);
+    EXPECT_EQ(accepted(limits(R"(goal_bias="1")")).limits.goalBias, 1.0);
+}
+
+TEST(PhysicsSceneLoader, RegionsNeedMinBelowMax)
+{
+    const std::string minBelowMax = "must be \"xmin xmax ymin ymax\" with min < max";
+    expectError(replaced(4, R"(  <limits robot_region="-1 1 1 -1" body_region="-1.2 1.2 -1.2 1.2"/>)"), 4,
+                "robot_region " + minBelowMax);
+    // equal bounds are not a region
+    expectError(replaced(4, R"(  <limits robot_region="-1 -1 -1 1" body_region="-1.2 1.2 -1.2 1.2"/>)"), 4,
+                "robot_region " + minBelowMax);
+    expectError(replaced(4, R"(  <limits robot_region="-1 1 -1 1" body_region="1.2 -1.2 -1.2 1.2"/>)"), 4,
+                "body_region " + minBelowMax);
+    expectError(replaced(4, R"(  <limits robot_region="-1 1 -1 1" body_region="-1.2 1.2 0 0"/>)"), 4,
+                "body_region " + minBelowMax);
+    expectError(replaced(4, R"(  <limits robot_region="-1 1 -1" body_region="-1.2 1.2 -1.2 1.2"/>)"), 4,
+                "attribute 'robot_region' of <limits> needs 4 values, got 3");
+    // just inside: a region of width 1e-9 (about the robot's and the goal's x)
+    std::vector<std::string> lines =
+        replaced(4, R"(  <limits robot_region="-0.8 -0.799999999 -1 1" body_region="-1.2 1.2 -1.2 1.2"/>)");
+    lines[14] = R"(  <goal xy="-0.8 0.8" radius="0.1"/>)";
+    const PhysicsScene thin = accepted(lines);
+    EXPECT_EQ(thin.limits.robotRegion.max().x(), -0.799999999);
+}
+
+TEST(PhysicsSceneLoader, NoRobotOrBodyRegion)
+{
+    // named at the robot's line, which the region is for
+    expectError(replaced(4, R"(  <limits body_region="-1.2 1.2 -1.2 1.2"/>)"), 6,
+                "no robot region: give <limits robot_region=\"xmin xmax ymin ymax\">");
+    expectError(replaced(4, ""), 6, "no robot region");
+    expectError(replaced(4, R"(  <limits robot_region="-1 1 -1 1"/>)"), 6,
+                "no body region: give <limits body_region=\"xmin xmax ymin ymax\">");
+}
+
+TEST(PhysicsSceneLoader, FloorSizeIsTwoPositiveNumbers)
+{
+    expectError(replaced(5, R"(  <floor size="0 2.4"/>)"), 5, "the floor size must be two positive numbers");
+    expectError(replaced(5, R"(  <floor size="2.4 -1"/>)"), 5, "the floor size must be two positive numbers");
+    expectError(replaced(5, R"(  <floor size="2.4"/>)"), 5,
+                "attribute 'size' of <floor> needs 2 values, got 1");
+    EXPECT_TRUE(accepted(replaced(5, R"(  <floor size="1e-9 1e-9"/>)"))
+                    .floorSize.isApprox(Eigen::Vector2d(1e-9, 1e-9)));
+    // the floor is optional
+    EXPECT_TRUE(accepted(replaced(5, "")).floorSize.isZero());
+}
+
+TEST(PhysicsSceneLoader, RootAttributes)
+{
+    expectError(replaced(1, R"(<physics_scene name="small" time_limit="0">)"), 1,
+                "attribute 'time_limit' of <physics_scene> must be positive, got 0");
+    expectError(replaced(1, R"(<physics_scene name="" time_limit="5">)"), 1,
+                "attribute 'name' of <physics_scene> must not be empty");
+    expectError(replaced(1, R"(<physics_scene name="small" author="me">)"), 1,
+                "unknown attribute 'author' on <physics_scene> (allowed: name, time_limit)");
+    EXPECT_EQ(accepted(replaced(1, R"(<physics_scene time_limit="1e-9">)")).timeLimit, 1e-9);
+    // without a name, the file's stem names the scene
+    EXPECT_EQ(accepted(replaced(1, R"(<physics_scene>)")).name, "test");
+}
+
+TEST(PhysicsSceneLoader, SecondSingleElement)
+{
+    std::vector<std::string> lines = smallSceneLines();
+    lines.insert(lines.begin() + 2, R"(  <simulation erp="0.4"/>)");  // line 3
+    expectError(lines, 3, "second <simulation> in <physics_scene>, only one is allowed (first at line 2)");
+    lines = smallSceneLines();
+    lines.insert(lines.begin() + 15,
+                 R"(  <goal xy="0 0" radius="0.1"/>)");  // line 16, after the goal of line 15
+    expectError(lines, 16, "second <goal> in <physics_scene>, only one is allowed (first at line 15)");
+    lines = smallSceneLines();
+    lines.insert(lines.begin() + 6, R"(  <robot radius="0.08" mass="1" start="0 0"/>)");  // line 7
+    expectError(lines, 7, "second <robot>");
+}
+
+TEST(PhysicsSceneLoader, TextInAnElement)
+{
+    expectError(replaced(5, R"(  <floor size="2.4 2.4">big</floor>)"), 5, "unexpected text in <floor>");
+    expectError(replaced(5, R"(  <floor size="2.4 2.4"><tile/></floor>)"), 5,
+                "unknown element <tile> in <floor>");
+}
+
+TEST(PhysicsSceneLoader, RobotValues)
+{
+    expectError(replaced(6, R"(  <robot name="robot" radius="0" mass="1" start="-0.8 -0.8"/>)"), 6,
+                "attribute 'radius' of <robot> must be positive, got 0");
+    expectError(replaced(6, R"(  <robot name="robot" radius="0.08" mass="0" start="-0.8 -0.8"/>)"), 6,
+                "attribute 'mass' of <robot> must be positive, got 0");
+    expectError(replaced(6, R"(  <robot name="robot" radius="0.08" start="-0.8 -0.8"/>)"), 6,
+                "missing required attribute 'mass' on <robot>");
+    expectError(replaced(6, R"(  <robot name="" radius="0.08" mass="1" start="-0.8 -0.8"/>)"), 6,
+                "attribute 'name' of <robot> must not be empty");
+    expectError(replaced(6, R"(  <robot name="robot" radius="0.08" mass="1" start="-0.8"/>)"), 6,
+                "attribute 'start' of <robot> needs 2 values, got 1");
+    const PhysicsScene scene =
+        accepted(replaced(6, R"(  <robot name="r2" radius="1e-9" mass="1e-9" start="-0.8 -0.8"/>)"));
+    EXPECT_EQ(scene.robot.name, "r2");
+    EXPECT_EQ(scene.robot.radius, 1e-9);
+    EXPECT_EQ(scene.robot.mass, 1e-9);
+    EXPECT_EQ(scene.robot.start.z(), 1e-9);  // on the floor
+}
+
+TEST(PhysicsSceneLoader, RobotStartJustInsideAndOutsideItsRegion)
+{
+    const std::string outside = "the robot starts outside its region (limits robot_region)";
+    expectError(replaced(6, R"(  <robot name="robot" radius="0.08" mass="1" start="-1.001 -0.8"/>)"), 6,
+                outside);
+    expectError(replaced(6, R"(  <robot name="robot" radius="0.08" mass="1" start="-0.8 -1.001"/>)"), 6,
+                outside);
+    expectError(replaced(6, R"(  <robot name="robot" radius="0.08" mass="1" start="-0.8 1.001"/>)"), 6,
+                outside);
+    // the region bounds the centre, edges included
+    accepted(replaced(6, R"(  <robot name="robot" radius="0.08" mass="1" start="-0.999 -0.999"/>)"));
+    accepted(replaced(6, R"(  <robot name="robot" radius="0.08" mass="1" start="-1 -1"/>)"));
+}
+
+TEST(PhysicsSceneLoader, GoalJustInsideAndOutsideTheRobotRegion)
+{
+    const std::string outside = "the goal centre is outside the robot region (limits robot_region)";
+    expectError(replaced(15, R"(  <goal xy="0.8 -1.001" radius="0.1"/>)"), 15, outside);
+    expectError(replaced(15, R"(  <goal xy="1.001 -0.8" radius="0.1"/>)"), 15, outside);
+    EXPECT_TRUE(accepted(replaced(15, R"(  <goal xy="0.999 -0.999" radius="0.1"/>)"))
+                    .goal.centre.isApprox(Eigen::Vector2d(0.999, -0.999)));
+    accepted(replaced(15, R"(  <goal xy="1 -1" radius="0.1"/>)"));
+}
+
+TEST(PhysicsSceneLoader, GoalValues)
+{
+    expectError(replaced(15, R"(  <goal xy="0.8 -0.8" radius="0"/>)"), 15,
+                "attribute 'radius' of <goal> must be positive, got 0");
+    expectError(replaced(15, R"(  <goal radius="0.1"/>)"), 15, "missing required attribute 'xy' on <goal>");
+    expectError(replaced(15, R"(  <goal xy="0.8 *" radius="0.1"/>)"), 15, "'*' (don't care) is not allowed");
+    EXPECT_EQ(accepted(replaced(15, R"(  <goal xy="0.8 -0.8" radius="1e-9"/>)")).goal.radius, 1e-9);
+}
+
+TEST(PhysicsSceneLoader, MovableBodiesJustInsideAndOutsideTheBodyRegion)
+{
+    const std::string box = R"(<box size="0.2 0.2 0.2"/>)";
+    expectError(looseCube("1.201 -0.4 0.1", box), 9,
+                "body 'loose' starts outside the body region (limits body_region)");
+    expectError(looseCube("0.6 -1.201 0.1", box), 9, "body 'loose' starts outside the body region");
+    EXPECT_DOUBLE_EQ(accepted(looseCube("1.199 -0.4 0.1", box)).bodies[2].start.translation().x(), 1.199);
+    accepted(looseCube("1.2 -1.2 0.1", box));  // edges included
+    // a constrained body too, named at its own line
+    std::vector<std::string> lines = smallSceneLines();
+    lines[10] = R"(    <origin xyz="0 1.201 0.1" rpy="0 0 90deg"/>)";
+    expectError(lines, 10, "body 'slider' starts outside the body region");
+    lines[10] = R"(    <origin xyz="0 1.199 0.1" rpy="0 0 90deg"/>)";
+    accepted(lines);
+}
+
+TEST(PhysicsSceneLoader, FixedBodyHasNoMassAndMovableBodiesNeedOne)
+{
+    expectError(
+        replaced(
+            7,
+            R"(  <body name="wall" kind="fixed" mass="1"><origin xyz="0 0.8 0.1"/><box size="1 0.2 0.2"/></body>)"),
+        7, "a fixed body has no mass");
+    const std::string box = R"(<box size="0.2 0.2 0.2"/>)";
+    expectError(looseCube("0.6 -0.4 0.1", box, R"(kind="free" mass="0")"), 9,
+                "attribute 'mass' of <body> must be positive, got 0");
+    expectError(looseCube("0.6 -0.4 0.1", box, R"(kind="free")"), 9,
+                "missing required attribute 'mass' on <body>");
+    EXPECT_EQ(accepted(looseCube("0.6 -0.4 0.1", box, R"(kind="free" mass="1e-9")")).bodies[2].mass, 1e-9);
+    // a constrained body needs one too
+    std::vector<std::string> lines = smallSceneLines();
+    lines[9] = R"(  <body name="slider" kind="constrained">)";
+    expectError(lines, 10, "missing required attribute 'mass' on <body>");
+}
+
+TEST(PhysicsSceneLoader, BodyNameAndAttributes)
+{
+    const std::string box = R"(<box size="0.2 0.2 0.2"/>)";
+    expectError(replaced(9, R"(  <body kind="free" mass="0.5"><box size="0.2 0.2 0.2"/></body>)"), 9,
+                "missing required attribute 'name' on <body>");
+    expectError(looseCube("0.6 -0.4 0.1", box, R"(kind="free" mass="0.5" colour="red")"), 9,
+                "unknown attribute 'colour' on <body> (allowed: name, kind, mass)");
+    expectError(looseCube("0.6 -0.4 0.1", box, R"(mass="0.5")"), 9,
+                "missing required attribute 'kind' on <body>");
+}
+
+TEST(PhysicsSceneLoader, SecondOriginOrPushInABody)
+{
+    expectError(replaced(12, R"(    <box size="0.2 0.2 0.2"/><origin xyz="0 0 0.1"/>)"), 12,
+                "second <origin> in body 'slider'");
+    std::vector<std::string> lines = smallSceneLines();
+    // line 12: a push, then the box; line 13: the push again
+    lines[11] = lines[12] + "<box size=\"0.2 0.2 0.2\"/>";
+    expectError(lines, 13, "second <push> in body 'slider'");
+}
+
+TEST(PhysicsSceneLoader, ShapeSizesArePositive)
+{
+    const std::string at = "0.6 -0.4 0.1";
+    expectError(looseCube(at, R"(<box size="0.2 0 0.2"/>)"), 9,
+                "attribute 'size' of <box> must be positive in every component, got '0.2 0 0.2'");
+    expectError(looseCube(at, R"(<box size="0.2 0.2"/>)"), 9,
+                "attribute 'size' of <box> needs 3 values, got 2");
+    expectError(looseCube(at, R"(<cylinder radius="0" length="0.2"/>)"), 9,
+                "attribute 'radius' of <cylinder> must be positive, got 0");
+    expectError(looseCube(at, R"(<cylinder radius="0.1" length="0"/>)"), 9,
+                "attribute 'length' of <cylinder> must be positive, got 0");
+    expectError(looseCube(at, R"(<sphere radius="-0.1"/>)"), 9,
+                "attribute 'radius' of <sphere> must be positive, got -0.1");
+    expectError(looseCube(at, R"(<sphere radius="0.1" length="0.2"/>)"), 9,
+                "unknown attribute 'length' on <sphere> (allowed: radius)");
+    expectError(
+        replaced(
+            8,
+            R"(  <body name="wedge" kind="fixed"><prism corners="0.2 0 -0.1 0.17 -0.1 -0.17" length="0"/></body>)"),
+        8, "attribute 'length' of <prism> must be positive, got 0");
+    expectError(
+        replaced(
+            8,
+            R"(  <body name="wedge" kind="fixed"><prism corners="0.2 0 -0.1 0.17 -0.1" length="0.2"/></body>)"),
+        8, "attribute 'corners' of <prism> needs 6 values, got 5");
+
+    // just inside
+    const PhysicsScene box = accepted(looseCube(at, R"(<box size="1e-9 1e-9 1e-9"/>)"));
+    EXPECT_TRUE(box.bodies[2].shape.boxSize.isApprox(Eigen::Vector3d::Constant(1e-9)));
+    const PhysicsScene cylinder = accepted(looseCube(at, R"(<cylinder radius="1e-9" length="1e-9"/>)"));
+    EXPECT_EQ(cylinder.bodies[2].shape.kind, PhysicsShape::Kind::Cylinder);
+    EXPECT_EQ(cylinder.bodies[2].shape.radius, 1e-9);
+    EXPECT_EQ(cylinder.bodies[2].shape.length, 1e-9);
+    const PhysicsScene sphere = accepted(looseCube(at, R"(<sphere radius="1e-9"/>)"));
+    EXPECT_EQ(sphere.bodies[2].shape.kind, PhysicsShape::Kind::Sphere);
+    EXPECT_EQ(sphere.bodies[2].shape.radius, 1e-9);
+}
+
+TEST(PhysicsSceneLoader, PrismAreaJustAboveAndBelowTheLimit)
+{
+    // twice the area of the triangle (0,0) (1,0) (0,h) is h; the limit is 1e-9
+    const auto wedge = [](const std::string &h)
+    {
+        return replaced(8, R"(  <body name="wedge" kind="fixed"><prism corners="0 0 1 0 0 )" + h +
+                               R"(" length="0.2"/></body>)");
+    };
+    expectError(wedge("0.5e-9"), 8, "the prism's corners must be counter-clockwise and not collinear");
+    expectError(wedge("-2e-9"), 8, "counter-clockwise");
+    EXPECT_EQ(accepted(wedge("2e-9")).bodies[1].shape.triangle(1, 2), 2e-9);
+}
+
+TEST(PhysicsSceneLoader, PushWidthsArePositive)
+{
+    const std::string angle = R"( angle_tolerance="10deg")";
+    expectError(push(PUSH_AXIS + R"(strip_half_width="0" lateral_tolerance="0.03")" + angle), 13,
+                "attribute 'strip_half_width' of <push> must be positive, got 0");
+    expectError(push(PUSH_AXIS + R"(strip_half_width="0.06" lateral_tolerance="0")" + angle), 13,
+                "attribute 'lateral_tolerance' of <push> must be positive, got 0");
+    expectError(push(PUSH_AXIS + R"(lateral_tolerance="0.03")" + angle), 13,
+                "missing required attribute 'strip_half_width' on <push>");
+    const PhysicsScene scene =
+        accepted(push(PUSH_AXIS + R"(strip_half_width="1e-9" lateral_tolerance="2e-9")" + angle));
+    EXPECT_EQ(scene.bodies[3].push.stripHalfWidth, 1e-9);
+    EXPECT_EQ(scene.bodies[3].push.lateralTolerance, 2e-9);
+    expectError(push(PUSH_AXIS + R"(strip_half_width="0.06" lateral_tolerance="0.03" depth="1")" + angle), 13,
+                "unknown attribute 'depth' on <push>");
+}
+
+TEST(PhysicsSceneLoader, PushAngleToleranceIsGivenAndPositive)
+{
+    const std::string widths = PUSH_AXIS + R"(strip_half_width="0.06" lateral_tolerance="0.03")";
+    expectError(push(widths), 13, "angle_tolerance must be given and > 0");
+    expectError(push(widths + R"( angle_tolerance="0")"), 13, "angle_tolerance must be given and > 0");
+    expectError(push(widths + R"( angle_tolerance="-0.001deg")"), 13,
+                "attribute 'angle_tolerance' of <push> must not be negative, got -0.001deg");
+    expectError(push(widths + R"( angle_tolerance="wide")"), 13, "malformed number 'wide'");
+    EXPECT_NEAR(accepted(push(widths + R"( angle_tolerance="0.001deg")")).bodies[3].push.angleTolerance,
+                0.001 * PI / 180.0, 1e-18);
+    EXPECT_EQ(accepted(push(widths + R"( angle_tolerance="1e-9")")).bodies[3].push.angleTolerance, 1e-9);
+}
+
+TEST(PhysicsSceneLoader, PushAxisJustAboveAndBelowZero)
+{
+    const std::string rest = R"( strip_half_width="0.06" lateral_tolerance="0.03" angle_tolerance="10deg")";
+    expectError(push(R"(axis="1e-10 0 0")" + rest), 13, "the push axis must not be zero");
+    expectError(push(R"(axis="1 0")" + rest), 13, "attribute 'axis' of <push> needs 3 values, got 2");
+    expectError(push(rest), 13, "missing required attribute 'axis' on <push>");
+    EXPECT_TRUE(
+        accepted(push(R"(axis="0 1e-8 0")" + rest)).bodies[3].push.axis.isApprox(Eigen::Vector3d::UnitY()));
+}
+
+TEST(PhysicsSceneLoader, OriginValues)
+{
+    const std::string box = R"(<box size="0.2 0.2 0.2"/>)";
+    expectError(
+        replaced(
+            9, R"(  <body name="loose" kind="free" mass="0.5"><origin xyz="0.6 -0.4 0.1" rpy="0 0 right"/>)" +
+                   box + "</body>"),
+        9, "malformed number 'right' in attribute 'rpy' of <origin>");
+    expectError(replaced(9, R"(  <body name="loose" kind="free" mass="0.5"><origin xyz="0.6 -0.4"/>)" + box +
+                                "</body>"),
+                9, "attribute 'xyz' of <origin> needs 3 values, got 2");
+    // without an origin a body stands at the world origin
+    const PhysicsScene scene =
+        accepted(replaced(9, R"(  <body name="loose" kind="free" mass="0.5">)" + box + "</body>"));
+    EXPECT_TRUE(scene.bodies[2].start.isApprox(Eigen::Isometry3d::Identity()));
+}
+
+TEST(PhysicsSceneLoader, DirectoryInsteadOfAFile)
+{
+    const std::string message = inputErrorOf([&] { loadPhysicsScene(DATA_DIR); });
+    EXPECT_EQ(message, DATA_DIR + ": is a directory, not a scene file");
+}
