@@ -10,6 +10,8 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 using namespace ompl_phys;
 using namespace ompl_phys::test;
