@@ -151,3 +151,19 @@ TEST(CollisionWorldInput, SurfaceNamingAnUnknownObstacleThrows)
     EXPECT_TRUE(startsWith(what, scene.surfaces[0].where.str() + ": ")) << what;
     EXPECT_TRUE(contains(what, "no_such_table")) << what;
 }
+
+TEST(CollisionWorldSelf, AdjacentLinksMayTouchWhateverTheirOrder)
+{
+    // planar_2link's base box and first link's cylinder overlap at the first joint, and the first
+    // link's end meets the second link's box at the second joint: adjacent links are never checked
+    Scene scene;
+    scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/robots/planar_2link.urdf";
+    scene.robot.toolLink = "tool";
+    const ManipulationModelPtr model = makeModel(scene);
+    const CollisionWorld world(model);
+    const std::vector<ObjectPose> objects;
+    const std::vector<int> resting;
+    std::string contact;
+    for (const std::vector<double> &q : {std::vector<double>{0.0, 0.0}, std::vector<double>{1.0, -2.0}})
+        EXPECT_TRUE(world.isCollisionFree({q.data(), &objects, &resting}, &contact)) << contact;
+}
