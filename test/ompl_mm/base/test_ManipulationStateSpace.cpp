@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 using namespace ompl_mm;
 using namespace ompl_mm::test;
@@ -185,6 +186,36 @@ TEST(ManipulationStateSpaceArm, HeldObjectTurnsWithARevoluteTool)
         const Eigen::Vector3d expected(radius * std::cos(theta), radius * std::sin(theta), height);
         EXPECT_NEAR((space.objectPosition(at, 0) - expected).norm(), 0.0, 1e-9) << t;
         EXPECT_NEAR(std::remainder(space.objectYaw(at, 0) - theta, 2 * M_PI), 0.0, 1e-9) << t;
+    }
+    space.freeState(at);
+    space.freeState(to);
+    space.freeState(from);
+}
+
+TEST(ManipulationStateSpaceArm, PickedUpObjectFollowsTheToolFromItsSurface)
+{
+    // the cup rests on a small table under the hand at the start and is held at the end: picking it
+    // up carries it with the hand from the first instant (on the circle, not along the chord)
+    Scene scene = unitArmScene();
+    scene.surfaces.push_back(
+        supportSurface("table", Eigen::Vector2d(0.5, -0.1), Eigen::Vector2d(0.7, 0.1), 0.8));
+    scene.objects.push_back(cylinderObject("cup", 0.05, 0.1));
+    ManipulationStateSpace space(makeModel(scene));
+    ob::State *from = space.allocState();
+    ob::State *to = space.allocState();
+    ob::State *at = space.allocState();
+    const double radius = 0.6, height = 0.8;
+    space.robotValues(from)[0] = 0.0;
+    space.robotValues(to)[0] = M_PI / 2;
+    setObject(space, from, 0, radius, 0, height, 0.0);
+    setObject(space, to, 0, 0, radius, height, M_PI / 2);
+    ASSERT_GE(space.restingSurface(from, 0), 0);
+    ASSERT_LT(space.restingSurface(to, 0), 0);
+    for (const auto &[a, b] : {std::pair{from, to}, std::pair{to, from}})  // pick up, and put down
+    {
+        space.interpolate(a, b, 0.5, at);
+        const Eigen::Vector3d onTheCircle(radius * std::cos(M_PI / 4), radius * std::sin(M_PI / 4), height);
+        EXPECT_NEAR((space.objectPosition(at, 0) - onTheCircle).norm(), 0.0, 1e-9);
     }
     space.freeState(at);
     space.freeState(to);
