@@ -37,9 +37,7 @@ namespace
                 "planner to use (" + ompl_mm::ManipulationSetup::plannerRegistry().nameList() + ")", extra,
                 options.common, exitCode))
             return false;
-        if (!ompl_mm::ManipulationSetup::plannerRegistry().has(options.common.planner))
-            throw ompl_core::InputError("unknown planner '" + options.common.planner + "' (known: " +
-                                        ompl_mm::ManipulationSetup::plannerRegistry().nameList() + ")");
+        ompl_mm::ManipulationSetup::plannerRegistry().require(options.common.planner);
         return true;
     }
 

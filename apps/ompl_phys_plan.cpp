@@ -41,9 +41,7 @@ namespace
                 "control planner: " + ompl_phys::PhysicsSetup::plannerRegistry().nameList(), extra,
                 options.common, exitCode))
             return false;
-        if (!ompl_phys::PhysicsSetup::plannerRegistry().has(options.common.planner))
-            throw ompl_core::InputError("unknown planner '" + options.common.planner + "' (known: " +
-                                        ompl_phys::PhysicsSetup::plannerRegistry().nameList() + ")");
+        ompl_phys::PhysicsSetup::plannerRegistry().require(options.common.planner);
         return true;
     }
 

@@ -1,7 +1,8 @@
-/* Pieces of JSON and XML text for the result writers of both libraries. */
+/* Pieces of text for messages and for the result writers of both libraries. */
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace ompl_core
 {
@@ -12,4 +13,7 @@ namespace ompl_core
     /** text with `&`, `<`, `>`, `"` and the apostrophe replaced by XML's entities (amp, lt, gt, quot,
         apos), for attribute values and element text. */
     std::string xmlEscaped(const std::string &text);
+
+    /** The names joined by ", " for messages ("known: a, b"), or whenEmpty when there are none. */
+    std::string joinedNames(const std::vector<std::string> &names, const std::string &whenEmpty = "none");
 }  // namespace ompl_core

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/TextFormat.h"
 
 #include <ompl/base/Planner.h>
 
@@ -38,6 +39,14 @@ namespace ompl_core
         /** Whether a planner of that name is registered (names are case-sensitive). */
         bool has(const std::string &name) const { return find(name) != entries_.end(); }
 
+        /** Checks a planner name before anything is built for it.
+            @throws InputError at where (no place by default) for an unknown name, listing the known ones. */
+        void require(const std::string &name, const SourceLocation &where = {}) const
+        {
+            if (!has(name))
+                throw InputError(where, "unknown planner '" + name + "' (known: " + nameList() + ")");
+        }
+
         /** Names in registration order. */
         std::vector<std::string> names() const
         {
@@ -48,13 +57,7 @@ namespace ompl_core
         }
 
         /** "name, name, …" in registration order. */
-        std::string nameList() const
-        {
-            std::string list;
-            for (const Entry &entry : entries_)
-                list += (list.empty() ? "" : ", ") + entry.name;
-            return list;
-        }
+        std::string nameList() const { return joinedNames(names(), ""); }
 
         /** The one-line description given to add(). @throws InputError for an unknown name. */
         const std::string &description(const std::string &name) const { return entry(name).description; }
@@ -81,10 +84,8 @@ namespace ompl_core
 
         const Entry &entry(const std::string &name) const
         {
-            const auto found = find(name);
-            if (found == entries_.end())
-                throw InputError("unknown planner '" + name + "' (known: " + nameList() + ")");
-            return *found;
+            require(name);
+            return *find(name);
         }
 
         std::vector<Entry> entries_;

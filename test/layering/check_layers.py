@@ -39,14 +39,15 @@ def read_table(doc):
 def allowed(stands_on):
     """{folder: every folder it may include}: itself and all it stands on, transitively."""
     reach = {}
+
+    def below_and_self(folder):
+        # the table is a stack, so the recursion ends at the bottom rows (stands on nothing)
+        if folder not in reach:
+            reach[folder] = {folder}.union(*(below_and_self(b) for b in stands_on[folder]))
+        return reach[folder]
+
     for folder in stands_on:
-        seen, todo = {folder}, [folder]
-        while todo:
-            for below in stands_on[todo.pop()]:
-                if below not in seen:
-                    seen.add(below)
-                    todo.append(below)
-        reach[folder] = seen
+        below_and_self(folder)
     return reach
 
 

@@ -26,6 +26,14 @@ namespace ompl_core
         return out.str();
     }
 
+    std::string joinedNames(const std::vector<std::string> &names, const std::string &whenEmpty)
+    {
+        std::string joined;
+        for (const std::string &name : names)
+            joined += (joined.empty() ? "" : ", ") + name;
+        return joined.empty() ? whenEmpty : joined;
+    }
+
     std::string xmlEscaped(const std::string &text)
     {
         static const std::pair<char, const char *> ENTITIES[] = {

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/TextFormat.h"
 
 namespace ompl_core
 {
@@ -31,10 +32,7 @@ namespace ompl_core
 
         std::string joinNames(std::initializer_list<const char *> names)
         {
-            std::string joined;
-            for (const char *name : names)
-                joined += (joined.empty() ? "" : ", ") + std::string(name);
-            return joined.empty() ? "none" : joined;
+            return joinedNames(std::vector<std::string>(names.begin(), names.end()));
         }
 
         bool isListed(const char *name, std::initializer_list<const char *> names)

@@ -1,20 +1,13 @@
 #include "ompl_core/run/ParameterSetting.h"
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/TextFormat.h"
 
 namespace ompl_core
 {
     namespace
     {
         const char *const COMMAND_LINE = "command line option --param";
-
-        std::string joined(const std::vector<std::string> &names)
-        {
-            std::string text;
-            for (const std::string &name : names)
-                text += (text.empty() ? "" : ", ") + name;
-            return text.empty() ? "none" : text;
-        }
     }  // namespace
 
     ParameterSetting parseParameterOption(const std::string &text)
@@ -35,7 +28,8 @@ namespace ompl_core
                 std::vector<std::string> names;
                 params.getParamNames(names);
                 throw InputError(setting.where, "unknown parameter '" + setting.name + "' of planner " +
-                                                    planner.getName() + " (known: " + joined(names) + ")");
+                                                    planner.getName() + " (known: " + joinedNames(names) +
+                                                    ")");
             }
             bool accepted = false;
             std::string why;

@@ -20,9 +20,8 @@ namespace ompl_mm
 
         ManipulationModelPtr makeModel(const Scene &scene)
         {
-            if (scene.planner != "mopl")
-                throw ompl_core::InputError(ompl_core::SourceLocation{scene.file, 0},
-                                            "unknown planner '" + scene.planner + "' (known: mopl)");
+            ManipulationSetup::plannerRegistry().require(scene.planner,
+                                                         ompl_core::SourceLocation{scene.file, 0});
             return std::make_shared<ManipulationModel>(scene, loadRobot(scene));
         }
     }  // namespace
