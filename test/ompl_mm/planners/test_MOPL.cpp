@@ -3,6 +3,7 @@
 // the input checks of MOPL's parameters.
 #include "common/MobileBlocked.h"
 
+#include <ompl/base/PlannerData.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
@@ -237,6 +238,41 @@ TEST(MOPL, ReportsTimeoutWhenGoalIsWalledIn)
     EXPECT_FALSE(setup.getProblemDefinition()->hasExactSolution());
 }
 
+TEST(MOPL, TreeVerticesLieAtMostAVertexStepApart)
+{
+    // walks add a vertex every vertex_step (and at each trajectory waypoint), so no tree edge moves the
+    // robot or an object farther than vertex_step plus the one check step that overshoots it
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    ManipulationSetup setup(mobileBlockedScene());
+    setup.mopl()->setSeed(1);
+    setup.solve(ompl::base::IterationTerminationCondition(300));
+    ompl::base::PlannerData data(setup.getSpaceInformation());
+    setup.getPlannerData(data);
+    const ManipulationStateSpace &space = *setup.manipulationSpace();
+    const double bound = setup.mopl()->getVertexStep() + setup.mopl()->getConnectStep() + 1e-9;
+    std::vector<unsigned int> children;
+    std::size_t edges = 0;
+    double longest = 0.0;
+    for (unsigned int v = 0; v < data.numVertices(); ++v)
+    {
+        data.getEdges(v, children);
+        for (unsigned int w : children)
+        {
+            const ompl::base::State *a = data.getVertex(v).getState();
+            const ompl::base::State *b = data.getVertex(w).getState();
+            double move = std::hypot(space.robotValues(a)[0] - space.robotValues(b)[0],
+                                     space.robotValues(a)[1] - space.robotValues(b)[1]);
+            for (unsigned int i = 0; i < space.objectCount(); ++i)
+                move = std::max(move, (space.objectPosition(a, i) - space.objectPosition(b, i)).norm());
+            longest = std::max(longest, move);
+            ++edges;
+        }
+    }
+    EXPECT_GT(edges, 50u);
+    EXPECT_LE(longest, bound);
+    EXPECT_GT(longest, 0.5 * setup.mopl()->getVertexStep()) << "walks do leave vertices behind them";
+}
+
 TEST(MOPL, DeclaresEveryTunableParameter)
 {
     ManipulationSetup setup(mobileBlockedScene());
@@ -264,10 +300,6 @@ TEST(MOPL, RestartsClearTheTreesAndStillSolve)
     EXPECT_LT(stats.iterations, 300u * ((1u << (stats.restarts + 1)) - 1) + 1);
     EXPECT_TRUE(setup.manipulationPath().check());
 }
-
-namespace
-{
-}  // namespace
 
 TEST(MOPLParameters, StepsMustBePositiveAndFiniteAndSmallOnesAreAccepted)
 {
