@@ -13,9 +13,12 @@ namespace ompl_mm
     /** A manipulation plan as an OMPL geometric path: the waypoints, plus one label per segment
         saying which primitive moved which object. Consecutive waypoints interpolate with the
         manipulation state space, so PathGeometric::check() and OMPL's benchmark re-check it as is.
-        Operations inherited from PathGeometric that insert or remove states (interpolate,
-        subdivide, reverse, append, keepAfter/Before, random perturbations) do not update the
-        labels; use the label-aware members here instead. Owns copies of its states, as
+        The labels describe the states they were given with. When anything else changes the states
+        (OMPL's PathSimplifier, PathGeometric::interpolate, subdivide, reverse, …), the next
+        call that reads labels relabels every segment from its motion with the space
+        information's ManipulationMotionValidator (the first primitive that explains it); a
+        segment no primitive explains, or a space information without that validator, makes it
+        throw rather than answer with labels that do not fit. Owns copies of its states, as
         PathGeometric does. */
     class ManipulationPath : public ompl::geometric::PathGeometric
     {
@@ -30,10 +33,13 @@ namespace ompl_mm
         /** Appends a copy of the first state. @throws ompl::Exception when the path has states. */
         void appendFirst(const ompl::base::State *state);
 
-        /** Label of the segment from state i to state i + 1. */
-        const SegmentLabel &label(std::size_t i) const { return labels_[i]; }
-        /** All labels, one per segment (getStateCount() - 1 of them for a non-empty path). */
-        const std::vector<SegmentLabel> &labels() const { return labels_; }
+        /** Label of the segment from state i to state i + 1. @throws as labels(). */
+        const SegmentLabel &label(std::size_t i) const { return labels()[i]; }
+        /** All labels, one per segment (getStateCount() - 1 of them for a non-empty path),
+            relabelled from the motions when the states changed since they were labelled.
+            @throws ompl::Exception naming the first segment that no primitive explains, or when
+            relabelling is needed and the space information has no ManipulationMotionValidator. */
+        const std::vector<SegmentLabel> &labels() const;
 
         /** Removes states first + 1 … last − 1; the segment first → last takes first's label.
             @pre every removed segment has the same label as the segment leaving first. */
@@ -52,10 +58,18 @@ namespace ompl_mm
 
         /** Checks that every segment is one its label allows: transit moves no object, a push or
             transfer moves only its object, and that objects move only in such segments. Returns an
-            empty string when consistent, else a description of the first fault. */
+            empty string when consistent, else a description of the first fault (also when
+            relabelling changed states fails). */
         std::string checkLabels() const;
 
     private:
-        std::vector<SegmentLabel> labels_;
+        /** True when the states are those the labels were given or found for. */
+        bool labelsFitStates() const;
+        /** Remembers the current states as the ones the labels describe. */
+        void rememberLabelledStates() const;
+
+        mutable std::vector<SegmentLabel> labels_;
+        mutable std::vector<double> labelledValues_;  ///< the labelled states' values, one after another
+        mutable std::vector<double> values_;          ///< scratch for one state's values
     };
 }  // namespace ompl_mm

@@ -23,6 +23,12 @@ namespace ompl_mm
         /** Sets the base joints of q (one value per moving joint) so that the tool point is at world
             (x, y), metres; the other joints keep their values. Exact for any q. @pre exists(). */
         void placeTool(const Eigen::Vector2d &toolXY, double *q) const;
+        /** True when qa and qb (one value per moving joint) differ in the base joints only, so
+            that the tool moves in a straight horizontal line as they interpolate. @pre exists(). */
+        bool onlyBaseMoves(const double *qa, const double *qb) const;
+        /** Radius about the tool point's vertical axis of a vertical cylinder that holds the
+            robot's collision shapes at joint values q, metres (each shape by its bounding sphere). */
+        double footprintRadius(const double *q) const;
 
     private:
         const ManipulationModel &model_;

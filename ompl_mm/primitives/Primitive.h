@@ -3,6 +3,7 @@
 #include "ompl_mm/primitives/Trajectory.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace ompl_mm
@@ -34,6 +35,14 @@ namespace ompl_mm
             Returns false, appending nothing, when the primitive cannot act (e.g. no IK). */
         virtual bool propagate(const ompl::base::State *from, const ompl::base::State *to,
                                Trajectory &trajectory) const = 0;
+
+        /** The label of a segment this primitive could have made from `from` to `to` (straight
+            interpolation in the manipulation space), or nothing when its motion cannot move
+            things that way, e.g. an object moving with no push or grasp. Motion checks and path
+            relabelling (ManipulationMotionValidator) ask each primitive in turn; collisions are
+            not its concern. */
+        virtual std::optional<SegmentLabel> explain(const ompl::base::State *from,
+                                                    const ompl::base::State *to) const = 0;
 
     protected:
         /** True when every object rests on a support surface in state. */

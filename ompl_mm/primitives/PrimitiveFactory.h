@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ namespace ompl_mm
         /** The value of a parameter, which counts as read; `fallback` when absent.
             @throws ompl_core::InputError when present but not a finite number. */
         double number(const std::string &name, double fallback) const;
+        /** The value of a parameter, which counts as read; nothing when absent.
+            @throws ompl_core::InputError when present but not a finite number. */
+        std::optional<double> optionalNumber(const std::string &name) const;
         /** The value of a required parameter. @throws ompl_core::InputError when absent or malformed. */
         double number(const std::string &name) const;
         /** @throws ompl_core::InputError naming the first parameter that no number() call asked for. */

@@ -18,5 +18,8 @@ namespace ompl_mm
             segment; always succeeds. */
         bool propagate(const ompl::base::State *from, const ompl::base::State *to,
                        Trajectory &trajectory) const override;
+        /** Primitive's hook: a transit segment when every object rests and none moves. */
+        std::optional<SegmentLabel> explain(const ompl::base::State *from,
+                                            const ompl::base::State *to) const override;
     };
 }  // namespace ompl_mm

@@ -33,6 +33,12 @@ namespace ompl_mm
         /** Height of the shape along z (box z size, cylinder length, sphere diameter), metres.
             @throws ompl::Exception when kind holds no Kind value (an out-of-range cast). */
         double height() const;
+        /** Radius of the smallest vertical cylinder about the shape's axis that holds it whatever
+            its yaw (box: half its horizontal diagonal), metres. @throws as height(). */
+        double footprintRadius() const;
+        /** Radius of the smallest sphere about the shape's centre that holds it, metres.
+            @throws as height(). */
+        double boundingRadius() const;
     };
 
     /** A fixed body of the workspace. */

@@ -1,5 +1,8 @@
 #include "ompl_mm/geometric/ManipulationPath.h"
 
+#include "ompl_mm/geometric/ManipulationMotionValidator.h"
+
+#include <algorithm>
 #include <cassert>
 
 #include <ompl/base/SpaceInformation.h>
@@ -16,30 +19,88 @@ namespace ompl_mm
         if (!states_.empty())
             throw ompl::Exception("ManipulationPath::appendFirst on a path that has states");
         append(state);
+        rememberLabelledStates();
     }
 
     void ManipulationPath::appendLabelled(const ompl::base::State *state, SegmentLabel label)
     {
         if (states_.empty())
             throw ompl::Exception("ManipulationPath::appendLabelled on an empty path");
+        labels();  // relabels changed states before the new segment joins them
         append(state);
         labels_.push_back(label);
         assert(labels_.size() + 1 == states_.size());  // one label per segment
+        rememberLabelledStates();
+    }
+
+    const std::vector<SegmentLabel> &ManipulationPath::labels() const
+    {
+        if (labelsFitStates())
+            return labels_;
+        const auto *validator =
+            dynamic_cast<const ManipulationMotionValidator *>(si_->getMotionValidator().get());
+        if (!validator)
+            throw ompl::Exception(
+                "ManipulationPath: its states changed since they were labelled and the space "
+                "information has no ManipulationMotionValidator to relabel them");
+        std::vector<SegmentLabel> relabelled;
+        for (std::size_t i = 0; i + 1 < states_.size(); ++i)
+        {
+            const std::optional<SegmentLabel> label = validator->explain(states_[i], states_[i + 1]);
+            if (!label)
+                throw ompl::Exception("ManipulationPath: segment " + std::to_string(i) +
+                                      " of the changed path is no motion of any primitive");
+            relabelled.push_back(*label);
+        }
+        labels_ = std::move(relabelled);
+        rememberLabelledStates();
+        return labels_;
+    }
+
+    bool ManipulationPath::labelsFitStates() const
+    {
+        if (states_.empty())
+            return labels_.empty();
+        const ompl::base::StateSpace &space = *si_->getStateSpace();
+        space.copyToReals(values_, states_[0]);
+        const std::size_t dimension = values_.size();
+        if (labels_.size() + 1 != states_.size() || labelledValues_.size() != dimension * states_.size())
+            return false;
+        for (std::size_t i = 0; i < states_.size(); ++i)
+        {
+            space.copyToReals(values_, states_[i]);
+            if (!std::equal(values_.begin(), values_.end(), labelledValues_.begin() + i * dimension))
+                return false;
+        }
+        return true;
+    }
+
+    void ManipulationPath::rememberLabelledStates() const
+    {
+        labelledValues_.clear();
+        for (const ompl::base::State *state : states_)
+        {
+            si_->getStateSpace()->copyToReals(values_, state);
+            labelledValues_.insert(labelledValues_.end(), values_.begin(), values_.end());
+        }
     }
 
     void ManipulationPath::shortcut(std::size_t first, std::size_t last)
     {
         if (last <= first + 1)
             return;
+        labels();
         for (std::size_t i = first + 1; i < last; ++i)
             si_->freeState(states_[i]);
         states_.erase(states_.begin() + first + 1, states_.begin() + last);
         labels_.erase(labels_.begin() + first + 1, labels_.begin() + last);
         assert(labels_.size() + 1 == states_.size());
+        rememberLabelledStates();
     }
 
     void ManipulationPath::removeRepeatedStates()
     {
+        labels();
         for (std::size_t i = 1; i < states_.size();)
         {
             if (si_->getStateSpace()->equalStates(states_[i - 1], states_[i]))
@@ -51,6 +112,7 @@ namespace ompl_mm
             else
                 ++i;
         }
+        rememberLabelledStates();
     }
 
     double ManipulationPath::toolPathLength() const
@@ -78,14 +140,23 @@ namespace ompl_mm
     {
         std::map<std::string, unsigned int> counts{
             {"transit", 0}, {"push", 0}, {"pickup", 0}, {"transfer", 0}};
-        for (std::size_t i = 0; i < labels_.size(); ++i)
-            if (i == 0 || labels_[i] != labels_[i - 1])
-                ++counts[primitiveKindName(labels_[i].kind)];
+        const std::vector<SegmentLabel> &segments = labels();
+        for (std::size_t i = 0; i < segments.size(); ++i)
+            if (i == 0 || segments[i] != segments[i - 1])
+                ++counts[primitiveKindName(segments[i].kind)];
         return counts;
     }
 
     std::string ManipulationPath::checkLabels() const
     {
+        try
+        {
+            labels();
+        }
+        catch (const ompl::Exception &e)
+        {
+            return e.what();
+        }
         const auto *space = si_->getStateSpace()->as<ManipulationStateSpace>();
         for (std::size_t i = 0; i < labels_.size(); ++i)
             for (unsigned int o = 0; o < space->objectCount(); ++o)

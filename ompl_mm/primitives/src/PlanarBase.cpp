@@ -1,5 +1,6 @@
 #include "ompl_mm/primitives/PlanarBase.h"
 
+#include <algorithm>
 #include <cassert>
 #include <vector>
 
@@ -33,5 +34,30 @@ namespace ompl_mm
         const Eigen::Vector3d atZero = model_.toolFrame(q).translation();
         q[jointX_] = toolXY.x() - atZero.x();
         q[jointY_] = toolXY.y() - atZero.y();
+    }
+
+    bool PlanarBase::onlyBaseMoves(const double *qa, const double *qb) const
+    {
+        assert(exists());
+        for (int j = 0; j < static_cast<int>(model_.dof()); ++j)
+            if (j != jointX_ && j != jointY_ && qa[j] != qb[j])
+                return false;
+        return true;
+    }
+
+    double PlanarBase::footprintRadius(const double *q) const
+    {
+        const RobotModel &robot = model_.robot();
+        std::vector<Eigen::Isometry3d> frames;
+        robot.forwardKinematics(q, model_.scene().robot.basePose, frames);
+        const Eigen::Vector2d tool = model_.toolFrame(q).translation().head<2>();
+        double radius = 0.0;
+        for (std::size_t link = 0; link < robot.links().size(); ++link)
+            for (const LinkShape &part : robot.links()[link].shapes)
+            {
+                const Eigen::Vector2d centre = (frames[link] * part.origin).translation().head<2>();
+                radius = std::max(radius, (centre - tool).norm() + part.shape.boundingRadius());
+            }
+        return radius;
     }
 }  // namespace ompl_mm

@@ -13,10 +13,15 @@ namespace ompl_mm
 
     double PrimitiveParameters::number(const std::string &name, double fallback) const
     {
+        return optionalNumber(name).value_or(fallback);
+    }
+
+    std::optional<double> PrimitiveParameters::optionalNumber(const std::string &name) const
+    {
         read_.push_back(name);
         const auto it = spec_.params.find(name);
         if (it == spec_.params.end())
-            return fallback;
+            return std::nullopt;
         std::size_t used = 0;
         double value = 0.0;
         try
@@ -55,7 +60,7 @@ namespace ompl_mm
         registerType("transit", [](const ManipulationStateSpace *space, const PrimitiveParameters &)
                      { return std::make_shared<Transit>(space); });
         registerType("push_mobile", [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
-                     { return std::make_shared<PushMobile>(space, params.number("standoff")); });
+                     { return std::make_shared<PushMobile>(space, params.optionalNumber("standoff")); });
     }
 
     void PrimitiveFactory::registerType(const std::string &type, Builder builder)

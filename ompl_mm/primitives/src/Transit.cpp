@@ -21,4 +21,12 @@ namespace ompl_mm
         space_->freeState(next);
         return true;
     }
+
+    std::optional<SegmentLabel> Transit::explain(const ompl::base::State *from,
+                                                 const ompl::base::State *to) const
+    {
+        if (space_->anyObjectMoves(from, to) || !allObjectsRest(from))
+            return std::nullopt;
+        return SegmentLabel{PrimitiveKind::Transit, -1};
+    }
 }  // namespace ompl_mm

@@ -2,8 +2,19 @@
 
 #include <ompl/util/Exception.h>
 
+#include <cmath>
+
 namespace ompl_mm
 {
+    namespace
+    {
+        [[noreturn]] void throwInvalidKind(const char *function, Shape::Kind kind)
+        {
+            // only a Kind value cast from an out-of-range integer gets here
+            throw ompl::Exception(function, "invalid shape kind " + std::to_string(static_cast<int>(kind)));
+        }
+    }  // namespace
+
     double Shape::height() const
     {
         switch (kind)
@@ -15,9 +26,34 @@ namespace ompl_mm
             case Kind::Sphere:
                 return 2.0 * radius;
         }
-        // only a Kind value cast from an out-of-range integer gets here
-        throw ompl::Exception("Shape::height",
-                              "invalid shape kind " + std::to_string(static_cast<int>(kind)));
+        throwInvalidKind("Shape::height", kind);
+    }
+
+    double Shape::footprintRadius() const
+    {
+        switch (kind)
+        {
+            case Kind::Box:
+                return 0.5 * boxSize.head<2>().norm();
+            case Kind::Cylinder:
+            case Kind::Sphere:
+                return radius;
+        }
+        throwInvalidKind("Shape::footprintRadius", kind);
+    }
+
+    double Shape::boundingRadius() const
+    {
+        switch (kind)
+        {
+            case Kind::Box:
+                return 0.5 * boxSize.norm();
+            case Kind::Cylinder:
+                return std::hypot(radius, 0.5 * length);
+            case Kind::Sphere:
+                return radius;
+        }
+        throwInvalidKind("Shape::boundingRadius", kind);
     }
 
     int Scene::objectIndex(const std::string &name) const

@@ -1,6 +1,7 @@
 #include "ompl_mm/setup/ManipulationSetup.h"
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_mm/geometric/ManipulationMotionValidator.h"
 
 namespace ompl_mm
 {
@@ -37,6 +38,7 @@ namespace ompl_mm
         goal_ = std::make_shared<ManipulationGoal>(si_);
         setGoal(goal_);
         primitives_ = factory.build(scene.primitives, space_.get());
+        si_->setMotionValidator(std::make_shared<ManipulationMotionValidator>(si_, primitives_));
         setPlannerByName(scene.planner);
         ompl_core::applyParameters(*planner_, scene.plannerParams);
     }

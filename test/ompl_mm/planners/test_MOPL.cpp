@@ -1,7 +1,7 @@
 // Tests for MOPL: solves MOBILE BLOCKED for fixed seeds and re-checks every solution with an
-// independent planar geometry model (discs and rectangles, no FCL), then checks reproducibility and
-// the input checks of MOPL's parameters.
-#include "common/MobileBlocked.h"
+// independent planar geometry model (common/PlanarRecheck.h), then checks reproducibility and the
+// input checks of MOPL's parameters.
+#include "common/PlanarRecheck.h"
 
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -29,120 +29,6 @@ namespace
     {
         return setup.solve(ompl::base::IterationTerminationCondition(MAX_ITERATIONS));
     }
-    constexpr double RADIUS = 0.2;         // robot and objects are discs of this radius seen from above
-    constexpr double CONNECT_STEP = 0.05;  // the scene's collision-check step along motions
-
-    /** Deepest overlap a straight motion checked every CONNECT_STEP can hide: a disc passing
-        another (radii summing to `reach`) is checked at most half a step from its closest point. */
-    double hiddenOverlap(double reach)
-    {
-        return reach - std::sqrt(reach * reach - 0.25 * CONNECT_STEP * CONNECT_STEP);
-    }
-
-    constexpr double STANDOFF = 0.41;
-
-    /** True when a disc at p overlaps the box footprint of an obstacle (axis-aligned here). */
-    bool discHitsBox(const Eigen::Vector2d &p, const Obstacle &box, double allowed)
-    {
-        const Eigen::Vector2d centre = box.pose.translation().head<2>();
-        const Eigen::Vector2d half = 0.5 * box.shape.boxSize.head<2>();
-        const Eigen::Vector2d closest = p.cwiseMax(centre - half).cwiseMin(centre + half);
-        return (closest - p).norm() < RADIUS - allowed;
-    }
-
-    /** Independent validity of a MOBILE BLOCKED configuration in the plane; waypoints must be
-        free (exact = true), states between them may overlap by what the check step can hide. */
-    std::string planarFault(const Eigen::Vector2d &robot, const std::vector<Eigen::Vector2d> &objects,
-                            const Scene &scene, bool exact)
-    {
-        // passing a box corner is passing a point: the reach is the disc's own radius
-        const double boxAllowed = exact ? 1e-9 : hiddenOverlap(RADIUS);
-        const double discAllowed = exact ? 1e-9 : hiddenOverlap(2 * RADIUS);
-        std::vector<Eigen::Vector2d> discs{robot};
-        discs.insert(discs.end(), objects.begin(), objects.end());
-        for (std::size_t a = 0; a < discs.size(); ++a)
-        {
-            for (const Obstacle &obstacle : scene.obstacles)
-                if (discHitsBox(discs[a], obstacle, boxAllowed))
-                    return "disc " + std::to_string(a) + " hits " + obstacle.name;
-            for (std::size_t b = a + 1; b < discs.size(); ++b)
-                if ((discs[a] - discs[b]).norm() < 2 * RADIUS - discAllowed)
-                    return "discs " + std::to_string(a) + " and " + std::to_string(b) + " overlap";
-        }
-        return {};
-    }
-
-    /** Re-checks a solution without the library's collision checker or labels' own checks. */
-    void recheck(const ManipulationSetup &setup, const ManipulationPath &path, const Scene &scene)
-    {
-        const ManipulationStateSpace &space = *setup.manipulationSpace();
-        const unsigned int n = space.objectCount();
-        auto robotAt = [&](const ompl::base::State *s)
-        { return Eigen::Vector2d(space.robotValues(s)[0], space.robotValues(s)[1]); };
-        auto objectsAt = [&](const ompl::base::State *s)
-        {
-            std::vector<Eigen::Vector2d> objects;
-            for (unsigned int i = 0; i < n; ++i)
-                objects.push_back(space.objectPosition(s, i).head<2>());
-            return objects;
-        };
-
-        // starts at the start
-        const ompl::base::State *first = path.getState(0);
-        EXPECT_NEAR((robotAt(first) - Eigen::Vector2d(1.9, 1.9)).norm(), 0.0, 1e-12);
-        for (unsigned int i = 0; i < n; ++i)
-            EXPECT_NEAR((objectsAt(first)[i] - scene.objects[i].start.position.head<2>()).norm(), 0.0, 1e-12);
-
-        ompl::base::State *between = space.allocState();
-        for (std::size_t k = 0; k + 1 < path.getStateCount(); ++k)
-        {
-            const ompl::base::State *a = path.getState(k);
-            const ompl::base::State *b = path.getState(k + 1);
-            const SegmentLabel label = path.label(k);
-            // objects move only while pushed: only the labelled object, with the robot behind it
-            std::vector<unsigned int> moved;
-            for (unsigned int i = 0; i < n; ++i)
-                if ((objectsAt(a)[i] - objectsAt(b)[i]).norm() > 1e-9)
-                    moved.push_back(i);
-            if (label.kind == PrimitiveKind::Transit)
-                EXPECT_TRUE(moved.empty()) << "transit segment " << k << " moves an object";
-            else
-            {
-                ASSERT_EQ(label.kind, PrimitiveKind::Push);
-                ASSERT_EQ(moved.size(), 1u) << "push segment " << k;
-                EXPECT_EQ(static_cast<int>(moved[0]), label.object);
-                const Eigen::Vector2d motion = objectsAt(b)[moved[0]] - objectsAt(a)[moved[0]];
-                for (const ompl::base::State *s : {a, b})
-                {
-                    const Eigen::Vector2d offset = objectsAt(s)[moved[0]] - robotAt(s);
-                    EXPECT_NEAR(offset.norm(), STANDOFF, 1e-9) << "push segment " << k;
-                    EXPECT_NEAR(offset.normalized().dot(motion.normalized()), 1.0, 1e-9)
-                        << "push segment " << k;
-                }
-                EXPECT_NEAR((robotAt(b) - robotAt(a) - motion).norm(), 0.0, 1e-9) << "push segment " << k;
-            }
-            // waypoints are free in the planar model; states between them, at 1 cm, overlap no more
-            // than the planner's check step can hide
-            const double length = std::max((robotAt(b) - robotAt(a)).norm(), 1e-3);
-            const int steps = static_cast<int>(std::ceil(length / 0.01));
-            for (int j = 0; j <= steps; ++j)
-            {
-                space.interpolate(a, b, static_cast<double>(j) / steps, between);
-                const bool waypoint = j == 0 || j == steps;
-                const std::string fault = planarFault(robotAt(between), objectsAt(between), scene, waypoint);
-                ASSERT_TRUE(fault.empty()) << "segment " << k << " step " << j << ": " << fault;
-            }
-        }
-        space.freeState(between);
-
-        // ends in the goal: robot at the centre, obj3 at (-0.9, -0.9)
-        const ompl::base::State *last = path.getState(path.getStateCount() - 1);
-        EXPECT_LT((robotAt(last) - Eigen::Vector2d(0.0, 0.0)).norm(), 0.011);
-        EXPECT_LT((objectsAt(last)[2] - Eigen::Vector2d(-0.9, -0.9)).norm(), 0.011);
-        for (unsigned int i = 0; i < n; ++i)
-            EXPECT_NEAR(space.objectPosition(last, i).z(), 0.0, 1e-12) << "objects stay on the floor";
-    }
-
     class MOPLOnMobileBlocked : public ::testing::TestWithParam<unsigned int>
     {
     protected:
@@ -160,7 +46,7 @@ TEST_P(MOPLOnMobileBlocked, SolvesAndSolutionPassesIndependentRecheck)
     EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
     EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
     EXPECT_GT(path.primitiveCounts().at("push"), 0u) << "obj3 must be pushed";
-    recheck(setup, path, scene);
+    planarRecheck(*setup.manipulationSpace(), path, scene);
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, MOPLOnMobileBlocked, ::testing::Values(1u, 2u, 3u, 4u, 5u, 6u));

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 using namespace ompl_mm;
@@ -48,4 +49,36 @@ TEST(PlanarBase, AnArmHasNone)
 {
     const ManipulationModelPtr model = makeModel(unitArmScene());
     EXPECT_FALSE(PlanarBase(*model).exists());
+}
+
+TEST(PlanarBase, FootprintRadiusHoldsEveryShapeAboutTheTool)
+{
+    const Scene scene = mobileBlockedScene();
+    EXPECT_DOUBLE_EQ(PlanarBase(*makeModel(scene)).footprintRadius(scene.robotStart.data()), 0.2);
+
+    // a box body 0.2 m behind the tool point counts with its bounding sphere
+    Scene boxed = scene;
+    boxed.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/robots/mobile_base_xy.urdf";
+    boxed.robot.toolLink = "body";
+    boxed.robot.toolOffset = Eigen::Vector3d(0.2, 0.0, 0.1);
+    EXPECT_DOUBLE_EQ(PlanarBase(*makeModel(boxed)).footprintRadius(boxed.robotStart.data()),
+                     0.2 + 0.5 * std::sqrt(0.4 * 0.4 + 0.3 * 0.3 + 0.2 * 0.2));
+}
+
+TEST(PlanarBase, AnArmOnTheBaseCountsInTheFootprintAndIsNoBaseJoint)
+{
+    Scene scene = mobileBlockedScene();
+    scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/robots/mobile_base_arm.urdf";
+    scene.robot.toolLink = "body";
+    const ManipulationModelPtr model = makeModel(scene);
+    const PlanarBase base(*model);
+    ASSERT_TRUE(base.exists());
+    const std::vector<double> q{1.0, 2.0, 0.3};
+    EXPECT_DOUBLE_EQ(base.footprintRadius(q.data()), 0.5 + 0.05) << "the hand reaches farthest";
+    for (int moved = 0; moved < 3; ++moved)
+    {
+        std::vector<double> other = q;
+        other[moved] += 1e-12;
+        EXPECT_EQ(base.onlyBaseMoves(q.data(), other.data()), moved < 2) << "joint " << moved;
+    }
 }

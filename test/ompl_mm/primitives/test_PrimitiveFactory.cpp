@@ -32,6 +32,11 @@ namespace
         {
             return false;
         }
+        std::optional<SegmentLabel> explain(const ompl::base::State *,
+                                            const ompl::base::State *) const override
+        {
+            return std::nullopt;
+        }
         double seconds() const { return seconds_; }
 
     private:
@@ -59,7 +64,7 @@ TEST_F(Factory, BuildsTheBuiltInTypes)
     EXPECT_TRUE(std::dynamic_pointer_cast<Transit>(primitives[0]));
     const auto push = std::dynamic_pointer_cast<PushMobile>(primitives[1]);
     ASSERT_TRUE(push);
-    EXPECT_DOUBLE_EQ(push->standoff(), 0.41);
+    EXPECT_DOUBLE_EQ(push->standoff(0), 0.41);
     EXPECT_EQ(primitives[0]->name(), "transit");
     EXPECT_EQ(primitives[1]->kind(), PrimitiveKind::Push);
     EXPECT_TRUE(factory_.build({}, &space_).empty());
@@ -83,11 +88,10 @@ TEST_F(Factory, UnknownTypeNamesTheLineAndTheKnownTypes)
     EXPECT_TRUE(contains(what, "transit")) << what;
 }
 
-TEST_F(Factory, MissingStandoffIsNamed)
+TEST_F(Factory, MissingStandoffIsComputedFromTheFootprints)
 {
-    const std::string what = error({spec("push_mobile")});
-    EXPECT_TRUE(startsWith(what, "unit_scene.xml:17: ")) << what;
-    EXPECT_TRUE(contains(what, "'standoff'")) << what;
+    const auto primitives = factory_.build({spec("push_mobile")}, &space_);
+    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<PushMobile>(primitives[0])->standoff(0), 0.41);
 }
 
 TEST_F(Factory, MalformedStandoffIsNamed)
@@ -165,24 +169,25 @@ TEST_F(Factory, MessagesNameTheLineTheTypeAndTheParameter)
     // the whole message of each check of the factory and of PrimitiveParameters
     EXPECT_EQ(error({spec("pick_and_place")}),
               "unit_scene.xml:17: unknown primitive <pick_and_place> (known: push_mobile, transit)");
-    EXPECT_EQ(error({spec("push_mobile")}),
-              "unit_scene.xml:17: <push_mobile> needs the parameter 'standoff'");
     EXPECT_EQ(error({spec("push_mobile", {{"standoff", "0.4x"}})}),
               "unit_scene.xml:17: <push_mobile> parameter 'standoff' must be a finite number, got '0.4x'");
     EXPECT_EQ(error({spec("push_mobile", {{"standoff", "0.41"}, {"speed", "2"}})}),
               "unit_scene.xml:17: unknown parameter 'speed' for <push_mobile>");
 }
 
-TEST_F(Factory, StandoffMustBePositiveAndATinyOneIsAccepted)
+TEST_F(Factory, StandoffMustKeepRobotAndObjectApartAndTouchingIsAccepted)
 {
     // PushMobile's own check, reported at the primitive's line with the value
     EXPECT_EQ(error({spec("push_mobile", {{"standoff", "0"}})}),
               "unit_scene.xml:17: push_mobile standoff must be positive, got 0.000000");
     EXPECT_EQ(error({spec("push_mobile", {{"standoff", "-0.2"}})}),
               "unit_scene.xml:17: push_mobile standoff must be positive, got -0.200000");
-    const auto primitives = factory_.build({spec("push_mobile", {{"standoff", "1e-6"}})}, &space_);
+    EXPECT_TRUE(
+        startsWith(error({spec("push_mobile", {{"standoff", "0.39"}})}),
+                   "unit_scene.xml:17: push_mobile standoff 0.39 leaves the robot overlapping object"));
+    const auto primitives = factory_.build({spec("push_mobile", {{"standoff", "0.4"}})}, &space_);
     ASSERT_EQ(primitives.size(), 1u);
-    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<PushMobile>(primitives[0])->standoff(), 1e-6);
+    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<PushMobile>(primitives[0])->standoff(0), 0.4);
 }
 
 TEST(PrimitiveFactoryRobot, PushMobileOnAnArmIsReportedAtItsLine)

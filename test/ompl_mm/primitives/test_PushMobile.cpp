@@ -57,7 +57,7 @@ TEST_F(MobilePush, NameKindAndStandoff)
 {
     EXPECT_EQ(push_.name(), "push_mobile");
     EXPECT_EQ(push_.kind(), PrimitiveKind::Push);
-    EXPECT_DOUBLE_EQ(push_.standoff(), STANDOFF);
+    EXPECT_DOUBLE_EQ(push_.standoff(0), STANDOFF);
 }
 
 TEST_F(MobilePush, UsefulWhenAnObjectSlides)
@@ -178,12 +178,28 @@ TEST_F(MobilePush, PropagateWithoutASlidingObjectAppendsNothing)
     EXPECT_EQ(trajectory_.size(), 1u);
 }
 
-TEST_F(MobilePush, ConstructorRejectsNonPositiveStandoff)
+TEST_F(MobilePush, ConstructorRejectsStandoffsThatOverlapRobotAndObject)
 {
+    // robot and objects are discs of radius 0.2: robot and pushed object touch at 0.4
     EXPECT_THROW(PushMobile(&space_, 0.0), ompl::Exception);
     EXPECT_THROW(PushMobile(&space_, -0.1), ompl::Exception);
     EXPECT_THROW(PushMobile(&space_, std::numeric_limits<double>::quiet_NaN()), ompl::Exception);
-    EXPECT_NO_THROW(PushMobile(&space_, 1e-3));
+    EXPECT_THROW(PushMobile(&space_, 0.399), ompl::Exception);
+    EXPECT_NO_THROW(PushMobile(&space_, 0.4));
+}
+
+TEST_F(MobilePush, DefaultStandoffIsPerObjectFromTheFootprints)
+{
+    // robot radius + the object's footprint radius (a box's half diagonal) + clearance
+    Scene scene = mobileBlockedScene();
+    scene.objects[1].shape.kind = Shape::Kind::Box;
+    scene.objects[1].shape.boxSize = {0.3, 0.4, 0.5};
+    ManipulationStateSpace space(makeModel(scene));
+    const PushMobile push(&space);
+    EXPECT_DOUBLE_EQ(push.standoff(0), 0.2 + 0.2 + PushMobile::CLEARANCE);
+    EXPECT_DOUBLE_EQ(push.standoff(1), 0.2 + 0.25 + PushMobile::CLEARANCE);
+    EXPECT_THROW(PushMobile(&space, 0.41), ompl::Exception) << "0.41 is too small for the box";
+    EXPECT_NO_THROW(PushMobile(&space, 0.45));
 }
 
 TEST(PushMobileRobot, ConstructorRejectsARobotWithoutPlanarBase)
@@ -209,7 +225,11 @@ TEST_F(MobilePush, ConstructorMessagesNameTheStandoff)
     };
     EXPECT_EQ(message(0.0), "push_mobile standoff must be positive, got 0.000000");
     EXPECT_EQ(message(-0.1), "push_mobile standoff must be positive, got -0.100000");
-    EXPECT_EQ(message(1e-6), "");
+    EXPECT_EQ(message(0.3),
+              "push_mobile standoff 0.3 leaves the robot overlapping object 'obj1' while pushing "
+              "it: it must be at least 0.4 (robot footprint radius 0.2 + object footprint radius "
+              "0.2); leave it out for 0.41");
+    EXPECT_EQ(message(0.4), "");
 }
 
 TEST(PushMobileRobot, ArmRobotMessageNamesTheNeededBase)

@@ -483,3 +483,26 @@ TEST(SceneLoader, ZeroTolerancesAreAcceptedAndNegativeOnesRejected)
     lines.at(10) = validLines().at(10) + "\n    <robot joints=\"0 0\" tolerance=\"-0.001\"/>";
     expectError(lines, 12, "attribute 'tolerance' of <robot> must not be negative, got -0.001");
 }
+
+TEST(Shape, FootprintAndBoundingRadii)
+{
+    Shape box;
+    box.boxSize = {0.6, 0.8, 1.2};
+    EXPECT_DOUBLE_EQ(box.footprintRadius(), 0.5);
+    EXPECT_DOUBLE_EQ(box.boundingRadius(), 0.5 * std::sqrt(0.36 + 0.64 + 1.44));
+    Shape cylinder;
+    cylinder.kind = Shape::Kind::Cylinder;
+    cylinder.radius = 0.3;
+    cylinder.length = 0.8;
+    EXPECT_DOUBLE_EQ(cylinder.footprintRadius(), 0.3);
+    EXPECT_DOUBLE_EQ(cylinder.boundingRadius(), 0.5);
+    Shape sphere;
+    sphere.kind = Shape::Kind::Sphere;
+    sphere.radius = 0.25;
+    EXPECT_DOUBLE_EQ(sphere.footprintRadius(), 0.25);
+    EXPECT_DOUBLE_EQ(sphere.boundingRadius(), 0.25);
+    Shape broken;
+    broken.kind = static_cast<Shape::Kind>(7);
+    EXPECT_THROW(broken.footprintRadius(), ompl::Exception);
+    EXPECT_THROW(broken.boundingRadius(), ompl::Exception);
+}

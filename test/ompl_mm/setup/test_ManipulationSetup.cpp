@@ -47,7 +47,7 @@ TEST(ManipulationSetup, BuildsMobileBlocked)
     EXPECT_EQ(setup.mopl()->getPrimitives()[0]->name(), "transit");
     const auto push = std::dynamic_pointer_cast<PushMobile>(setup.mopl()->getPrimitives()[1]);
     ASSERT_TRUE(push);
-    EXPECT_DOUBLE_EQ(push->standoff(), 0.41);
+    EXPECT_DOUBLE_EQ(push->standoff(0), 0.41);
 }
 
 TEST(ManipulationSetup, StartStateIsTheScenes)

@@ -1,0 +1,193 @@
+// Tests for ManipulationMotionValidator: which motions a primitive explains, collisions along them,
+// the last valid state, and the relabelling of paths that OMPL's tools change.
+#include "ompl_mm/geometric/ManipulationMotionValidator.h"
+
+#include "common/MobileBlocked.h"
+
+#include <ompl/geometric/PathSimplifier.h>
+
+#include <gtest/gtest.h>
+
+using namespace ompl_mm;
+using namespace ompl_mm::test;
+namespace ob = ompl::base;
+
+namespace
+{
+    constexpr double STANDOFF = 0.41;
+    const SegmentLabel TRANSIT{PrimitiveKind::Transit, -1};
+
+    class MotionValidation : public MobileBlockedTest
+    {
+    protected:
+        MotionValidation()
+        {
+            si_->setup();
+            validator_ = std::dynamic_pointer_cast<ManipulationMotionValidator>(si_->getMotionValidator());
+            // obj2 stands at (0.8, -0.1); a push along +y starts with the robot STANDOFF below it
+            from_ = startCopy();
+            to_ = startCopy();
+            setRobot(space_, from_, 0.8, -0.1 - STANDOFF);
+            setRobot(space_, to_, 0.8, 0.3 - STANDOFF);
+            setObject(space_, to_, 1, 0.8, 0.3);
+            // free, 0.5 m below from_
+            below_ = startCopy();
+            setRobot(space_, below_, 0.8, -0.1 - STANDOFF - 0.5);
+        }
+
+        ob::SpaceInformationPtr si_ = setup_.getSpaceInformation();
+        std::shared_ptr<ManipulationMotionValidator> validator_;
+        ob::State *from_;
+        ob::State *to_;
+        ob::State *below_;
+    };
+}  // namespace
+
+TEST_F(MotionValidation, SetupInstallsIt)
+{
+    ASSERT_NE(validator_, nullptr);
+    EXPECT_EQ(validator_->primitives().size(), 2u);
+}
+
+TEST_F(MotionValidation, TransitMovesTheRobotOnly)
+{
+    ob::State *there = startCopy();
+    setRobot(space_, there, 2.2, 1.9);
+    EXPECT_TRUE(validator_->explain(startCopy(), there) == TRANSIT);
+    EXPECT_TRUE(si_->checkMotion(startCopy(), there));
+}
+
+TEST_F(MotionValidation, PushWithTheToolBehindTheObjectIsValid)
+{
+    EXPECT_TRUE(validator_->explain(from_, to_) == (SegmentLabel{PrimitiveKind::Push, 1}));
+    EXPECT_TRUE(si_->checkMotion(from_, to_));
+    EXPECT_TRUE(si_->checkMotion(to_, from_) == false) << "pulling back: the tool is in front of the object";
+}
+
+TEST_F(MotionValidation, AnObjectMovingWithoutThePushIsInvalid)
+{
+    // the object slides while the robot is elsewhere: every state on the way is collision-free
+    ob::State *slid = startCopy();
+    setObject(space_, slid, 1, 0.8, 0.3);
+    EXPECT_FALSE(validator_->explain(startCopy(), slid));
+    EXPECT_FALSE(si_->checkMotion(startCopy(), slid));
+    // the tool 1 cm off the push line at the end, or a standoff 1 cm short, is no push either
+    setRobot(space_, to_, 0.81, 0.3 - STANDOFF);
+    EXPECT_FALSE(validator_->explain(from_, to_));
+    setRobot(space_, to_, 0.8, 0.31 - STANDOFF);
+    EXPECT_FALSE(validator_->explain(from_, to_));
+    // just inside the 1e-6 m tolerance still is
+    setRobot(space_, to_, 0.8 + 5e-7, 0.3 - STANDOFF);
+    EXPECT_TRUE(validator_->explain(from_, to_));
+}
+
+TEST_F(MotionValidation, TwoObjectsMovingAtOnceAreInvalid)
+{
+    setObject(space_, to_, 3, 1.2, 1.5);
+    EXPECT_FALSE(validator_->explain(from_, to_));
+}
+
+TEST_F(MotionValidation, AnObjectLiftedOffItsSurfaceIsNoPush)
+{
+    setObject(space_, to_, 1, 0.8, 0.3, 0.1);
+    EXPECT_FALSE(validator_->explain(from_, to_));
+}
+
+TEST_F(MotionValidation, CollisionsAlongAnExplainedMotionAreFound)
+{
+    // the robot from its start (1.9, 1.9) straight through block3 (x 1.2..2.2, y 0.15..1.45)
+    ob::State *through = startCopy();
+    setRobot(space_, through, 1.9, 0.0);
+    ASSERT_TRUE(validator_->explain(startCopy(), through));
+    EXPECT_FALSE(si_->checkMotion(startCopy(), through));
+    std::pair<ob::State *, double> lastValid{startCopy(), -1.0};
+    EXPECT_FALSE(si_->checkMotion(startCopy(), through, lastValid));
+    // the disc (radius 0.2) touches the block at y = 1.65; steps of at most 0.05 from y 1.9
+    EXPECT_GT(space_.robotValues(lastValid.first)[1], 1.65);
+    EXPECT_LT(space_.robotValues(lastValid.first)[1], 1.65 + 0.05 + 1e-9);
+    EXPECT_NEAR(lastValid.second, (1.9 - space_.robotValues(lastValid.first)[1]) / 1.9, 1e-12);
+    EXPECT_TRUE(si_->isValid(lastValid.first));
+}
+
+TEST_F(MotionValidation, AnUnexplainedMotionHasItsStartAsLastValidState)
+{
+    ob::State *slid = startCopy();
+    setObject(space_, slid, 1, 0.8, 0.3);
+    std::pair<ob::State *, double> lastValid{newState(), -1.0};
+    EXPECT_FALSE(si_->checkMotion(startCopy(), slid, lastValid));
+    EXPECT_EQ(lastValid.second, 0.0);
+    EXPECT_TRUE(space_.equalStates(lastValid.first, startCopy()));
+}
+
+TEST_F(MotionValidation, CountsValidAndInvalidMotions)
+{
+    validator_->resetMotionCounter();
+    si_->checkMotion(from_, to_);
+    si_->checkMotion(to_, from_);
+    si_->checkMotion(to_, from_);
+    EXPECT_EQ(validator_->getValidMotionCount(), 1u);
+    EXPECT_EQ(validator_->getInvalidMotionCount(), 2u);
+}
+
+TEST_F(MotionValidation, PathsChangedByOMPLAreRelabelledFromTheirMotions)
+{
+    ManipulationPath path(si_);
+    path.appendFirst(below_);
+    path.appendLabelled(from_, TRANSIT);
+    path.appendLabelled(to_, {PrimitiveKind::Push, 1});
+    path.interpolate(12);  // OMPL's own: inserts states, knows nothing of labels
+    ASSERT_EQ(path.getStateCount(), 12u);
+    ASSERT_EQ(path.labels().size(), 11u);
+    EXPECT_EQ(path.checkLabels(), "");
+    EXPECT_EQ(path.primitiveCounts().at("transit"), 1u);
+    EXPECT_EQ(path.primitiveCounts().at("push"), 1u);
+    EXPECT_TRUE(path.label(0) == TRANSIT);
+    EXPECT_TRUE(path.label(10) == (SegmentLabel{PrimitiveKind::Push, 1}));
+    EXPECT_TRUE(path.check());
+
+    // a state changed in place so that an object slides by itself: reported, never mislabelled
+    setObject(space_, path.getState(5), 3, 1.2, 1.5);
+    EXPECT_FALSE(path.check());
+    EXPECT_THROW(path.labels(), ompl::Exception);
+    EXPECT_TRUE(
+        startsWith(path.checkLabels(), "ManipulationPath: segment 4 of the changed path is no motion"))
+        << path.checkLabels();
+}
+
+TEST_F(MotionValidation, WithoutTheValidatorChangedPathsAreReported)
+{
+    auto si = std::make_shared<ob::SpaceInformation>(setup_.getStateSpace());
+    si->setStateValidityChecker(setup_.getStateValidityChecker());
+    si->setup();
+    ManipulationPath path(si);
+    path.appendFirst(startCopy());
+    path.appendLabelled(to_, TRANSIT);
+    EXPECT_TRUE(path.label(0) == TRANSIT) << "unchanged states keep the labels given";
+    path.interpolate(3);
+    EXPECT_THROW(path.labels(), ompl::Exception);
+}
+
+TEST_F(MotionValidation, OMPLsSimplifierKeepsPushesPushes)
+{
+    // a push made of three collinear steps becomes one push; the transit before it straightens
+    ManipulationPath path(si_);
+    path.appendFirst(below_);
+    ob::State *corner = startCopy();
+    setRobot(space_, corner, 1.3, -0.8);
+    path.appendLabelled(corner, TRANSIT);
+    path.appendLabelled(from_, TRANSIT);
+    for (double y : {0.0, 0.1, 0.2, 0.3})
+    {
+        ob::State *step = startCopy();
+        setRobot(space_, step, 0.8, y - STANDOFF);
+        setObject(space_, step, 1, 0.8, y);
+        path.appendLabelled(step, {PrimitiveKind::Push, 1});
+    }
+    ompl::geometric::PathSimplifier simplifier(si_);
+    simplifier.simplifyMax(path);
+    EXPECT_TRUE(path.check());
+    EXPECT_EQ(path.checkLabels(), "");
+    EXPECT_EQ(path.primitiveCounts().at("push"), 1u);
+    EXPECT_TRUE(space_.equalStates(path.getState(path.getStateCount() - 1), to_));
+    EXPECT_LT(path.getStateCount(), 6u);
+}

@@ -1,0 +1,79 @@
+// OMPL's own tools on a ManipulationSetup, used as an OMPL user would: Benchmark with its default
+// request (which simplifies every solution), SimpleSetup::simplifySolution and PathGeometric::check.
+// Every simplified path is re-checked independently (common/PlanarRecheck.h).
+#include "common/PlanarRecheck.h"
+
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/tools/benchmark/Benchmark.h>
+#include <ompl/util/Console.h>
+
+#include <gtest/gtest.h>
+
+using namespace ompl_mm;
+using namespace ompl_mm::test;
+
+TEST(OmplTools, BenchmarkWithItsDefaultRequestGivesCorrectSimplifiedPaths)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    const Scene scene = mobileBlockedScene();
+    ManipulationSetup setup(scene);
+    ompl::tools::Benchmark benchmark(setup, "mobile_blocked");
+    benchmark.addPlanner(setup.getPlanner());
+    unsigned int seed = 0;
+    benchmark.setPreRunEvent([&](const ompl::base::PlannerPtr &) { setup.mopl()->setSeed(++seed); });
+    unsigned int rechecked = 0;
+    benchmark.setPostRunEvent(
+        [&](const ompl::base::PlannerPtr &, ompl::tools::Benchmark::RunProperties &run)
+        {
+            ASSERT_EQ(run.at("solved BOOLEAN"), "1") << "seed " << seed;
+            SCOPED_TRACE("seed " + std::to_string(seed));
+            const ManipulationPath &path = setup.manipulationPath();
+            planarRecheck(*setup.manipulationSpace(), path, scene);
+            EXPECT_EQ(path.checkLabels(), "");
+            EXPECT_EQ(run.at("correct solution BOOLEAN"), "1");
+            EXPECT_EQ(run.at("simplified correct solution BOOLEAN"), "1");
+            EXPECT_EQ(run.at("simplified solution segments INTEGER"),
+                      std::to_string(path.getStateCount() - 1));
+            ++rechecked;
+        });
+    ompl::tools::Benchmark::Request request;  // OMPL's defaults: simplify = true
+    request.maxTime = 5.0;
+    request.runCount = 20;
+    request.displayProgress = false;
+    request.saveConsoleOutput = false;
+    benchmark.benchmark(request);
+    EXPECT_EQ(rechecked, 20u);
+}
+
+TEST(OmplTools, CheckRejectsAnObjectMovedWithoutAPush)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    ManipulationSetup setup(mobileBlockedScene());
+    setup.mopl()->setSeed(1);
+    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(20000)),
+              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    ManipulationPath &path = setup.manipulationPath();
+    ASSERT_TRUE(path.check());
+    // move obj3 to its goal in the second state: collision-free, but nothing pushes it there
+    setup.manipulationSpace()->setObjectPose(path.getState(1), 2, {Eigen::Vector3d(-0.9, -0.9, 0.0), 0.0});
+    ASSERT_TRUE(setup.getSpaceInformation()->isValid(path.getState(1)));
+    EXPECT_FALSE(path.check());
+    EXPECT_NE(path.checkLabels(), "");
+}
+
+TEST(OmplTools, SimplifySolutionKeepsTheLabelsTrue)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const Scene scene = mobileBlockedScene();
+    ManipulationSetup setup(scene);
+    setup.mopl()->setSeed(4);
+    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(20000)),
+              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const std::size_t before = setup.manipulationPath().getStateCount();
+    setup.simplifySolution();
+    const ManipulationPath &path = setup.manipulationPath();
+    EXPECT_LE(path.getStateCount(), before);
+    EXPECT_EQ(path.labels().size() + 1, path.getStateCount());
+    EXPECT_TRUE(path.check());
+    planarRecheck(*setup.manipulationSpace(), path, scene);
+}
