@@ -3,7 +3,9 @@
 it runs the old binary and then the new one (alternating, so both see the same machine load)
 and reports each one's median and mean planning time, success, the median of the per-seed time
 ratios (robust to seeds of very different length), and how many seeds gave an identical result
-(every value both write, but the times). Standard library only.
+(every value both write, but the times). With --quality (ompl_mm_plan only) it also reports
+plan quality from the JSON and the path files: mean tool-path length, round-trip pushes (an
+object pushed back to where it stood before), and the smoothing time. Standard library only.
 
 Example (before/after figures of a change):
   benchmarks/ab_seeds.py /tmp/old/ompl_mm_plan build/apps/ompl_mm_plan scenes/mobile_blocked.xml --seeds 50
@@ -13,7 +15,7 @@ import statistics
 import sys
 import tempfile
 
-from run_records import check_binary, run_app
+from run_records import check_binary, read_path_file, round_trip_pushes, run_app
 
 
 def same_values(a, b):
@@ -31,6 +33,26 @@ def describe(name, records):
             f"mean {statistics.mean(times):.4f} s")
 
 
+def describe_quality(name, records):
+    solved = [r for r in records if r["solved"]]
+    if not solved:
+        return f"{name}: no solved run"
+    trips = [r["round_trips"] for r in solved]
+    return (f"{name}: tool path mean {statistics.mean(r['path_length_m'] for r in solved):.3f} m, "
+            f"round-trip pushes {sum(trips)} in {sum(1 for t in trips if t)}/{len(solved)} plans, "
+            f"smoothing time median {statistics.median(r['stats']['time_smoothing_s'] for r in solved):.4f} s")
+
+
+def run_with_quality(binary, scene, seed, workdir, extra, quality):
+    """One run; with quality, its record gets the round trips counted in its path file."""
+    if not quality:
+        return run_app(binary, scene, seed, workdir, extra)
+    path_file = f"{workdir}/path.txt"
+    record = run_app(binary, scene, seed, workdir, extra, path_file=path_file)
+    record["round_trips"] = round_trip_pushes(read_path_file(path_file)) if record["solved"] else 0
+    return record
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("old")
@@ -38,6 +60,8 @@ def main():
     parser.add_argument("scene")
     parser.add_argument("--seeds", type=int, default=50, help="number of seeds (1..N), default 50")
     parser.add_argument("--first-seed", type=int, default=1)
+    parser.add_argument("--quality", action="store_true",
+                        help="also report tool-path length, round-trip pushes and smoothing time (ompl_mm_plan)")
     parser.add_argument("--args", nargs=argparse.REMAINDER, default=[],
                         help="further options for both apps (e.g. --planner rrt --time-limit 60)")
     args = parser.parse_args()
@@ -48,11 +72,14 @@ def main():
     old, new, same = [], [], 0
     with tempfile.TemporaryDirectory() as workdir:
         for seed in range(args.first_seed, args.first_seed + args.seeds):
-            old.append(run_app(args.old, args.scene, seed, workdir, args.args))
-            new.append(run_app(args.new, args.scene, seed, workdir, args.args))
+            old.append(run_with_quality(args.old, args.scene, seed, workdir, args.args, args.quality))
+            new.append(run_with_quality(args.new, args.scene, seed, workdir, args.args, args.quality))
             same += same_values(old[-1], new[-1])
     print(describe("old", old))
     print(describe("new", new))
+    if args.quality:
+        print(describe_quality("old", old))
+        print(describe_quality("new", new))
     print(f"identical results (all values both write, but times): {same}/{args.seeds} seeds")
     ratio = statistics.median(r["time_s"] for r in new) / statistics.median(r["time_s"] for r in old)
     paired = statistics.median(n["time_s"] / o["time_s"] for o, n in zip(old, new) if o["time_s"] > 0)

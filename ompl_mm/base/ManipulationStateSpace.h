@@ -65,6 +65,9 @@ namespace ompl_mm
 
         /** World position of the tool point, metres. */
         Eigen::Vector3d toolPosition(const ompl::base::State *state) const;
+        /** Length of the path the tool point travels as `from` interpolates to `to`, metres
+            (straight lines between states sampled at the collision resolution). */
+        double toolTravel(const ompl::base::State *from, const ompl::base::State *to) const;
 
         /** Sets every subspace's resolution so that motion checks step at most `step` in each
             (metres for positions and prismatic joints, radians for revolute joints and yaw), and

@@ -41,16 +41,21 @@ namespace ompl_mm
             relabelling is needed and the space information has no ManipulationMotionValidator. */
         const std::vector<SegmentLabel> &labels() const;
 
-        /** Removes states first + 1 … last − 1; the segment first → last takes first's label.
-            @pre every removed segment has the same label as the segment leaving first. */
-        void shortcut(std::size_t first, std::size_t last);
-
+        /** Replaces states first + 1 … last and their segments' labels with the trajectory's
+            waypoints after its first, which must equal state first, and its labels. The
+            trajectory's last waypoint becomes the new state in last's place (it may differ, e.g.
+            at the end of the path).
+            @throws ompl::Exception unless first < last < getStateCount() and the trajectory has
+            two waypoints or more and starts at state first. */
+        void replace(std::size_t first, std::size_t last, const Trajectory &trajectory);
         /** Removes states equal to their predecessor. */
         void removeRepeatedStates();
 
         /** Length of the path the tool point travels, metres (straight lines between waypoints
-            sampled at the space's collision resolution). */
+            sampled at the space's collision resolution). @pre the path has states. */
         double toolPathLength() const;
+        /** Length of the path the tool point travels from state first to state last, metres. */
+        double toolPathLength(std::size_t first, std::size_t last) const;
 
         /** Number of primitive applications by kind (a run of segments with the same label
             counts once; a run of transit segments counts as one transit). */

@@ -2,9 +2,10 @@
 
 #include "ompl_mm/base/ManipulationGoal.h"
 #include "ompl_mm/geometric/ManipulationPath.h"
-#include "ompl_mm/planners/EmptySpacePlanner.h"
+#include "ompl_mm/geometric/ManipulationSimplifier.h"
 #include "ompl_mm/planners/ManipulationTree.h"
 #include "ompl_mm/planners/ModalSampler.h"
+#include "ompl_mm/primitives/EmptySpacePlanner.h"
 
 #include <ompl/base/Planner.h>
 
@@ -22,7 +23,7 @@ namespace ompl_mm
         double nearestTime{0.0};      ///< nearest-neighbour search in the trees
         double propagateTime{0.0};    ///< empty-space planning (primitives' propagate)
         double connectTime{0.0};      ///< collision-checked walks along propagated trajectories
-        double smoothingTime{0.0};    ///< shortcutting the solution
+        double smoothingTime{0.0};    ///< simplifying the solution (ManipulationSimplifier)
         std::uint64_t iterations{0};  ///< iterations of the search loop, one sample each
         std::uint64_t restarts{0};    ///< times the trees were cleared (see MOPL::setRestartIterations)
         std::uint64_t collisionQueries{0};      ///< state validity queries (of a ManipulationValidityChecker)
@@ -33,7 +34,7 @@ namespace ompl_mm
         whose extensions chain manipulation primitives through an empty-space planner, whose samples
         leave parts undefined (resolved by the nearest neighbour), and whose goal tree gets its
         roots lazily by completing partial goals (PROJSAMP). Solutions are ManipulationPath objects
-        whose runs of transit segments are shortcut.
+        simplified by ManipulationSimplifier (pointless pushes removed, windows replanned).
 
         Use with a ManipulationStateSpace, a ManipulationValidityChecker and a ManipulationGoal
         (ManipulationSetup wires them). Requires primitives (setPrimitives) before setup(). Declared
@@ -86,9 +87,9 @@ namespace ompl_mm
         void setRestartIterations(unsigned int iterations) { restartIterations_ = iterations; }
         /** Iterations of the first run before a restart; 0 when the planner never restarts. */
         unsigned int getRestartIterations() const { return restartIterations_; }
-        /** Shortcut attempts per run of transit segments of the solution; 100 by default. */
+        /** Random windows of the solution that ManipulationSimplifier tries to replan; 100 by default. */
         void setSmoothingAttempts(unsigned int attempts) { smoothingAttempts_ = attempts; }
-        /** Shortcut attempts per run of transit segments of the solution. */
+        /** Random windows of the solution that ManipulationSimplifier tries to replan. */
         unsigned int getSmoothingAttempts() const { return smoothingAttempts_; }
 
         /** The metric's weights (each also a declared parameter). */
@@ -104,9 +105,10 @@ namespace ompl_mm
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         /** OMPL's hook: empties both trees and resets the statistics. */
         void clear() override;
-        /** OMPL's hook: makes the empty-space planner and empty trees.
-            @throws ompl::Exception without primitives, or when undefined_probability +
-            start_value_probability exceeds 1. */
+        /** OMPL's hook: makes the empty-space planner, the simplifier and empty trees.
+            @throws ompl::Exception without primitives, when undefined_probability +
+            start_value_probability exceeds 1, or without a ManipulationMotionValidator on the
+            space information (ManipulationSetup installs one). */
         void setup() override;
         /** OMPL's hook: the vertices and edges of both trees (tag 1: start tree, tag 2: goal tree;
             edges point in the direction of motion) and the statistics as properties. */
@@ -132,7 +134,6 @@ namespace ompl_mm
         double segmentLength(const ompl::base::State *a, const ompl::base::State *b) const;
         /** Builds, smooths and records the solution through forward vertex f and goal vertex g. */
         void addSolution(int f, int g);
-        void smooth(ManipulationPath &path);
         /** Clears both trees but the start. */
         void restart();
 
@@ -140,6 +141,7 @@ namespace ompl_mm
         const ManipulationStateSpace *space_{nullptr};
         std::unique_ptr<ManipulationMetric> metric_;
         std::unique_ptr<EmptySpacePlanner> esp_;
+        std::unique_ptr<ManipulationSimplifier> simplifier_;
         std::unique_ptr<ModalSampler> sampler_;
         ModalSampler::Probabilities probabilities_;
         std::unique_ptr<ManipulationTree> startTree_;

@@ -18,6 +18,16 @@ namespace ompl_mm::test
     using ompl_core::test::inputErrorOf;
     using ompl_core::test::startsWith;
 
+    /** MOBILE BLOCKED's push standoff, metres. */
+    constexpr double STANDOFF = 0.41;
+    /** The label of a transit segment. */
+    inline const SegmentLabel TRANSIT{PrimitiveKind::Transit, -1};
+    /** The label of a segment that pushes object. */
+    inline SegmentLabel pushOf(int object)
+    {
+        return {PrimitiveKind::Push, object};
+    }
+
     /** The MOBILE BLOCKED scene, loaded from scenes/mobile_blocked.xml. */
     inline Scene mobileBlockedScene()
     {

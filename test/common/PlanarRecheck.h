@@ -15,7 +15,6 @@ namespace ompl_mm::test
 {
     constexpr double PLANAR_RADIUS = 0.2;  // robot and objects are discs of this radius seen from above
     constexpr double PLANAR_CONNECT_STEP = 0.05;  // the scene's collision-check step along motions
-    constexpr double PLANAR_STANDOFF = 0.41;      // the scene's push standoff
 
     /** Deepest overlap a straight motion checked every PLANAR_CONNECT_STEP can hide: a disc passing
         another (radii summing to `reach`) is checked at most half a step from its closest point. */
@@ -95,7 +94,7 @@ namespace ompl_mm::test
                 for (const ompl::base::State *s : {a, b})
                 {
                     const Eigen::Vector2d offset = objectsAt(s)[moved[0]] - robotAt(s);
-                    ASSERT_NEAR(offset.norm(), PLANAR_STANDOFF, 1e-6) << "push segment " << k;
+                    ASSERT_NEAR(offset.norm(), STANDOFF, 1e-6) << "push segment " << k;
                     ASSERT_NEAR(offset.normalized().dot(motion.normalized()), 1.0, 1e-9)
                         << "push segment " << k;
                 }

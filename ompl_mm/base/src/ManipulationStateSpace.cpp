@@ -165,6 +165,23 @@ namespace ompl_mm
         return model_->toolFrame(robotValues(state)).translation();
     }
 
+    double ManipulationStateSpace::toolTravel(const ob::State *from, const ob::State *to) const
+    {
+        const unsigned int steps = std::max(1u, validSegmentCount(from, to));
+        ob::State *between = allocState();
+        double length = 0.0;
+        Eigen::Vector3d previous = toolPosition(from);
+        for (unsigned int k = 1; k <= steps; ++k)
+        {
+            interpolate(from, to, static_cast<double>(k) / steps, between);
+            const Eigen::Vector3d tool = toolPosition(between);
+            length += (tool - previous).norm();
+            previous = tool;
+        }
+        freeState(between);
+        return length;
+    }
+
     void ManipulationStateSpace::setCollisionResolution(double step)
     {
         for (unsigned int i = 0; i < getSubspaceCount(); ++i)

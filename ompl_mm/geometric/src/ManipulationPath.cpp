@@ -85,15 +85,23 @@ namespace ompl_mm
         }
     }
 
-    void ManipulationPath::shortcut(std::size_t first, std::size_t last)
+    void ManipulationPath::replace(std::size_t first, std::size_t last, const Trajectory &trajectory)
     {
-        if (last <= first + 1)
-            return;
+        if (last <= first || last >= states_.size() || trajectory.size() < 2 ||
+            !si_->getStateSpace()->equalStates(trajectory.state(0), states_[first]))
+            throw ompl::Exception(
+                "ManipulationPath::replace: the trajectory must start at state 'first' and "
+                "first < last < getStateCount()");
         labels();
-        for (std::size_t i = first + 1; i < last; ++i)
+        for (std::size_t i = first + 1; i <= last; ++i)
             si_->freeState(states_[i]);
-        states_.erase(states_.begin() + first + 1, states_.begin() + last);
-        labels_.erase(labels_.begin() + first + 1, labels_.begin() + last);
+        states_.erase(states_.begin() + first + 1, states_.begin() + last + 1);
+        labels_.erase(labels_.begin() + first, labels_.begin() + last);
+        for (std::size_t k = 1; k < trajectory.size(); ++k)
+        {
+            states_.insert(states_.begin() + first + k, si_->cloneState(trajectory.state(k)));
+            labels_.insert(labels_.begin() + first + k - 1, trajectory.label(k - 1));
+        }
         assert(labels_.size() + 1 == states_.size());
         rememberLabelledStates();
     }
@@ -117,22 +125,15 @@ namespace ompl_mm
 
     double ManipulationPath::toolPathLength() const
     {
+        return states_.empty() ? 0.0 : toolPathLength(0, states_.size() - 1);
+    }
+
+    double ManipulationPath::toolPathLength(std::size_t first, std::size_t last) const
+    {
         const auto *space = si_->getStateSpace()->as<ManipulationStateSpace>();
         double length = 0.0;
-        ompl::base::State *between = si_->allocState();
-        for (std::size_t i = 0; i + 1 < states_.size(); ++i)
-        {
-            const unsigned int steps = std::max(1u, space->validSegmentCount(states_[i], states_[i + 1]));
-            Eigen::Vector3d previous = space->toolPosition(states_[i]);
-            for (unsigned int k = 1; k <= steps; ++k)
-            {
-                space->interpolate(states_[i], states_[i + 1], static_cast<double>(k) / steps, between);
-                const Eigen::Vector3d tool = space->toolPosition(between);
-                length += (tool - previous).norm();
-                previous = tool;
-            }
-        }
-        si_->freeState(between);
+        for (std::size_t i = first; i < last; ++i)
+            length += space->toolTravel(states_[i], states_[i + 1]);
         return length;
     }
 

@@ -4,6 +4,7 @@
 
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/goals/GoalState.h>
+#include <ompl/util/String.h>
 #include <ompl/util/Time.h>
 
 #include <chrono>
@@ -145,6 +146,7 @@ namespace ompl_mm
         if (probabilities_.undefined + probabilities_.startValue > 1.0)
             throw ompl::Exception(getName(), "undefined_probability + start_value_probability exceeds 1");
         esp_ = std::make_unique<EmptySpacePlanner>(space_, primitives_);
+        simplifier_ = std::make_unique<ManipulationSimplifier>(si_);
         startTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), true);
         goalTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), false);
     }
@@ -425,36 +427,9 @@ namespace ompl_mm
         }
         {
             ScopedTimer timer(statistics_.smoothingTime);
-            smooth(*path);
+            simplifier_->simplify(*path, smoothingAttempts_, rng_, pdef_->getGoal().get());
         }
         pdef_->addSolutionPath(path, false, 0.0, getName());
-    }
-
-    void MOPL::smooth(ManipulationPath &path)
-    {
-        path.removeRepeatedStates();
-        // shortcut each maximal run of transit segments; mode switches stay where they are
-        std::size_t begin = 0;
-        while (begin < path.labels().size())
-        {
-            std::size_t end = begin;
-            while (end < path.labels().size() && path.label(end).kind == PrimitiveKind::Transit)
-                ++end;
-            // transit segments begin … end − 1 join states begin … end
-            for (unsigned int attempt = 0; attempt < smoothingAttempts_ && end > begin + 1; ++attempt)
-            {
-                const auto first = static_cast<std::size_t>(
-                    rng_.uniformInt(static_cast<int>(begin), static_cast<int>(end) - 2));
-                const auto last = static_cast<std::size_t>(
-                    rng_.uniformInt(static_cast<int>(first) + 2, static_cast<int>(end)));
-                if (si_->checkMotion(path.getState(first), path.getState(last)))
-                {
-                    path.shortcut(first, last);
-                    end -= last - first - 1;
-                }
-            }
-            begin = end + 1;
-        }
     }
 
     void MOPL::getPlannerData(ob::PlannerData &data) const
@@ -490,6 +465,16 @@ namespace ompl_mm
         data.properties["time_smoothing REAL"] = std::to_string(statistics_.smoothingTime);
         data.properties["time_ik REAL"] = "0";
         data.properties["iterations INTEGER"] = std::to_string(statistics_.iterations);
+        // what users mean by a plan's length and size; Benchmark's own "solution length" is the
+        // length in the whole state space
+        const auto *solution =
+            pdef_ ? dynamic_cast<const ManipulationPath *>(pdef_->getSolutionPath().get()) : nullptr;
+        if (solution)
+        {
+            data.properties["solution tool path length REAL"] = ompl::toString(solution->toolPathLength());
+            for (const auto &[kind, count] : solution->primitiveCounts())
+                data.properties["solution " + kind + " count INTEGER"] = std::to_string(count);
+        }
         data.properties["restarts INTEGER"] = std::to_string(statistics_.restarts);
         data.properties["collision_queries INTEGER"] = std::to_string(statistics_.collisionQueries);
         data.properties["collision_queries_free INTEGER"] = std::to_string(statistics_.freeCollisionQueries);

@@ -14,8 +14,6 @@ namespace ob = ompl::base;
 
 namespace
 {
-    constexpr double STANDOFF = 0.41;
-    const SegmentLabel TRANSIT{PrimitiveKind::Transit, -1};
 
     class MotionValidation : public MobileBlockedTest
     {

@@ -46,6 +46,7 @@ TEST_P(MOPLOnMobileBlocked, SolvesAndSolutionPassesIndependentRecheck)
     EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
     EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
     EXPECT_GT(path.primitiveCounts().at("push"), 0u) << "obj3 must be pushed";
+    EXPECT_EQ(ManipulationSimplifier::countRoundTrips(path), 0u) << "seed 1 pushed obj4 away and back";
     planarRecheck(*setup.manipulationSpace(), path, scene);
 }
 

@@ -14,7 +14,6 @@ namespace ob = ompl::base;
 
 namespace
 {
-    constexpr double STANDOFF = 0.41;
     constexpr unsigned int OBJ2 = 1, OBJ4 = 3;
     using V2 = Eigen::Vector2d;
 

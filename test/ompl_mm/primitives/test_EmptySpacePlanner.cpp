@@ -1,5 +1,5 @@
 // Tests for EmptySpacePlanner.
-#include "ompl_mm/planners/EmptySpacePlanner.h"
+#include "ompl_mm/primitives/EmptySpacePlanner.h"
 #include "ompl_mm/primitives/PushMobile.h"
 #include "ompl_mm/primitives/Transit.h"
 

@@ -1,4 +1,4 @@
-#include "ompl_mm/planners/EmptySpacePlanner.h"
+#include "ompl_mm/primitives/EmptySpacePlanner.h"
 
 #include <algorithm>
 #include <numeric>

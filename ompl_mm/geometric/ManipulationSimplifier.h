@@ -1,0 +1,71 @@
+#pragma once
+
+#include "ompl_mm/geometric/ManipulationMotionValidator.h"
+#include "ompl_mm/geometric/ManipulationPath.h"
+#include "ompl_mm/geometric/TransitConnector.h"
+#include "ompl_mm/primitives/EmptySpacePlanner.h"
+
+#include <ompl/base/Goal.h>
+#include <ompl/util/RandomNumbers.h>
+
+namespace ompl_mm
+{
+    /** Mode-aware smoothing of manipulation paths, the one MOPL applies to its solutions (OMPL's
+        PathSimplifier only straightens motions one at a time and cannot drop a manipulation):
+        1. removes pointless manipulation: an object pushed away and later back to where it was is
+           left where it was (the pushes become the robot's transits, routed around the object
+           where they meet it) or, when that fails, left where the last return push found it if
+           the goal still holds;
+        2. replans random windows of the path with the empty-space planner (the primitives
+           chained straight from the window's first to its last state: a straight transit, one
+           push instead of several of the same object, …) and keeps a window when every motion of
+           it is valid and the tool travels less.
+        Every change is checked with the ManipulationMotionValidator, so the result is as valid as
+        the input. Deterministic for a given RNG state. */
+    class ManipulationSimplifier
+    {
+    public:
+        /** What simplify() did. */
+        struct Outcome
+        {
+            unsigned int roundTripsRemoved{0};  ///< objects no longer pushed away and back
+            unsigned int windowsReplanned{0};   ///< windows replaced by shorter primitive chains
+        };
+
+        /** A simplifier for paths in si, with the primitives of its motion validator.
+            @throws ompl::Exception when si's motion validator is no ManipulationMotionValidator. */
+        explicit ManipulationSimplifier(const ompl::base::SpaceInformationPtr &si);
+
+        /** Simplifies path in place with `windowAttempts` random windows, drawing from rng. goal
+            (may be null: the path's end then stays where it is) tells whether a changed end
+            still solves the problem. */
+        Outcome simplify(ManipulationPath &path, unsigned int windowAttempts, ompl::RNG &rng,
+                         const ompl::base::Goal *goal) const;
+
+        /** Number of round trips in path: push runs (consecutive segments pushing one object)
+            after which the object stands where it stood before the same or an earlier push run
+            of it. */
+        static unsigned int countRoundTrips(const ManipulationPath &path);
+
+    private:
+        /** Removes one round trip if it can; true when the path changed. */
+        bool removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng) const;
+        /** Keeps `object` at `pose` in states first … last (the path's states elsewhere unchanged):
+            its pushes become the robot's transits, and where the robot's old motion meets the
+            object it is routed around it (TransitConnector). True when that gives valid motions and
+            the end still satisfies goal (the path then changed). */
+        bool holdObject(ManipulationPath &path, unsigned int object, const ObjectPose &pose,
+                        std::size_t first, std::size_t last, const ompl::base::Goal *goal,
+                        ompl::RNG &rng) const;
+        /** Replans states first … last with the empty-space planner; true when the path changed. */
+        bool replanWindow(ManipulationPath &path, std::size_t first, std::size_t last, ompl::RNG &rng) const;
+        /** True when every segment of the trajectory is a valid motion. */
+        bool isValid(const Trajectory &trajectory) const;
+
+        ompl::base::SpaceInformationPtr si_;
+        const ManipulationStateSpace *space_;
+        std::shared_ptr<const ManipulationMotionValidator> validator_;
+        mutable EmptySpacePlanner planner_;
+        TransitConnector connector_;
+    };
+}  // namespace ompl_mm

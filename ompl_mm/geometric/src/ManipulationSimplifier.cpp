@@ -1,0 +1,186 @@
+#include "ompl_mm/geometric/ManipulationSimplifier.h"
+
+#include <ompl/util/Exception.h>
+
+namespace ompl_mm
+{
+    namespace
+    {
+        constexpr double SAME_POSE = 1e-6;
+        // RRT iterations to route the robot around an object it no longer pushes
+        constexpr unsigned int CONNECT_ITERATIONS = 500;
+
+        /** The runs of consecutive segments that push `object`: first and last state of each. */
+        std::vector<std::pair<std::size_t, std::size_t>> pushRuns(const ManipulationPath &path,
+                                                                  unsigned int object)
+        {
+            std::vector<std::pair<std::size_t, std::size_t>> runs;
+            const std::vector<SegmentLabel> &labels = path.labels();
+            for (std::size_t i = 0; i < labels.size(); ++i)
+            {
+                if (labels[i].kind != PrimitiveKind::Push || labels[i].object != static_cast<int>(object))
+                    continue;
+                if (!runs.empty() && runs.back().second == i)
+                    runs.back().second = i + 1;
+                else
+                    runs.emplace_back(i, i + 1);
+            }
+            return runs;
+        }
+
+        bool samePose(const ObjectPose &a, const ObjectPose &b)
+        {
+            return (a.position - b.position).norm() < SAME_POSE && std::abs(a.yaw - b.yaw) < SAME_POSE;
+        }
+
+        double toolTravel(const Trajectory &trajectory)
+        {
+            double length = 0.0;
+            for (std::size_t k = 0; k + 1 < trajectory.size(); ++k)
+                length += trajectory.space()->toolTravel(trajectory.state(k), trajectory.state(k + 1));
+            return length;
+        }
+    }  // namespace
+
+    ManipulationSimplifier::ManipulationSimplifier(const ompl::base::SpaceInformationPtr &si)
+        : si_(si),
+          space_(si->getStateSpace()->as<ManipulationStateSpace>()),
+          validator_(std::dynamic_pointer_cast<const ManipulationMotionValidator>(si->getMotionValidator())),
+          planner_(space_, validator_ ? validator_->primitives() : std::vector<PrimitivePtr>()),
+          connector_(si)
+    {
+        if (!validator_)
+            throw ompl::Exception(
+                "ManipulationSimplifier needs a ManipulationMotionValidator on the space "
+                "information (ManipulationSetup installs one)");
+    }
+
+    ManipulationSimplifier::Outcome ManipulationSimplifier::simplify(ManipulationPath &path,
+                                                                     unsigned int windowAttempts,
+                                                                     ompl::RNG &rng,
+                                                                     const ompl::base::Goal *goal) const
+    {
+        Outcome outcome;
+        path.removeRepeatedStates();
+        while (removeRoundTrip(path, goal, rng))
+            ++outcome.roundTripsRemoved;
+        for (unsigned int attempt = 0; attempt < windowAttempts && path.getStateCount() > 2; ++attempt)
+        {
+            const int n = static_cast<int>(path.getStateCount());
+            const int first = rng.uniformInt(0, n - 3);
+            const int last = rng.uniformInt(first + 2, n - 1);
+            if (replanWindow(path, first, last, rng))
+                ++outcome.windowsReplanned;
+        }
+        path.removeRepeatedStates();
+        return outcome;
+    }
+
+    unsigned int ManipulationSimplifier::countRoundTrips(const ManipulationPath &path)
+    {
+        const auto *space = path.getSpaceInformation()->getStateSpace()->as<ManipulationStateSpace>();
+        unsigned int count = 0;
+        for (unsigned int object = 0; object < space->objectCount(); ++object)
+        {
+            const auto runs = pushRuns(path, object);
+            for (std::size_t j = 0; j < runs.size(); ++j)
+                for (std::size_t i = 0; i <= j; ++i)
+                    if (samePose(space->objectPose(path.getState(runs[i].first), object),
+                                 space->objectPose(path.getState(runs[j].second), object)))
+                    {
+                        ++count;
+                        break;
+                    }
+        }
+        return count;
+    }
+
+    bool ManipulationSimplifier::removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal,
+                                                 ompl::RNG &rng) const
+    {
+        for (unsigned int object = 0; object < space_->objectCount(); ++object)
+        {
+            const auto runs = pushRuns(path, object);
+            for (std::size_t i = 0; i < runs.size(); ++i)
+                for (std::size_t j = runs.size(); j-- > i;)
+                {
+                    const ObjectPose before = space_->objectPose(path.getState(runs[i].first), object);
+                    if (!samePose(before, space_->objectPose(path.getState(runs[j].second), object)))
+                        continue;
+                    // leave the object where it was; or, when the last return collides, where it found it
+                    if (holdObject(path, object, before, runs[i].first, runs[j].second, goal, rng) ||
+                        (j + 1 == runs.size() &&
+                         holdObject(path, object, space_->objectPose(path.getState(runs[j].first), object),
+                                    runs[j].first, path.getStateCount() - 1, goal, rng)))
+                        return true;
+                }
+        }
+        return false;
+    }
+
+    bool ManipulationSimplifier::holdObject(ManipulationPath &path, unsigned int object,
+                                            const ObjectPose &pose, std::size_t first, std::size_t last,
+                                            const ompl::base::Goal *goal, ompl::RNG &rng) const
+    {
+        std::vector<ompl::base::State *> held;
+        for (std::size_t k = first; k <= last; ++k)
+        {
+            held.push_back(si_->cloneState(path.getState(k)));
+            space_->setObjectPose(held.back(), object, pose);
+        }
+        Trajectory result(space_);
+        result.reset(held[0]);
+        bool routed = true;
+        for (std::size_t k = 0; routed && k + 1 < held.size();)
+        {
+            const std::optional<SegmentLabel> label = validator_->explain(held[k], held[k + 1]);
+            if (label && si_->checkMotion(held[k], held[k + 1]))
+            {
+                result.append(held[k + 1], *label);
+                ++k;
+                continue;
+            }
+            // the robot's old motion meets the held object: route it to the next valid state
+            // that only the robot's motions lead to
+            std::size_t next = k + 1;
+            while (next < held.size() && !space_->anyObjectMoves(held[k], held[next]) &&
+                   !si_->isValid(held[next]))
+                ++next;
+            routed = next < held.size() && !space_->anyObjectMoves(held[k], held[next]) &&
+                     connector_.connect(result, held[next], CONNECT_ITERATIONS, rng);
+            k = next;
+        }
+        const bool endKept =
+            last + 1 < path.getStateCount() || space_->equalStates(held.back(), path.getState(last));
+        for (ompl::base::State *state : held)
+            si_->freeState(state);
+        if (!routed || !(endKept || (goal && goal->isSatisfied(result.back()))))
+            return false;
+        path.replace(first, last, result);
+        return true;
+    }
+
+    bool ManipulationSimplifier::replanWindow(ManipulationPath &path, std::size_t first, std::size_t last,
+                                              ompl::RNG &rng) const
+    {
+        Trajectory replanned(space_);
+        const EmptySpacePlanner::Outcome outcome =
+            planner_.plan(path.getState(first), path.getState(last), replanned, rng);
+        if (outcome == EmptySpacePlanner::Outcome::AlreadyThere)
+            replanned.append(path.getState(last), {PrimitiveKind::Transit, -1});
+        else if (outcome != EmptySpacePlanner::Outcome::Reached)
+            return false;
+        if (toolTravel(replanned) >= path.toolPathLength(first, last) - 1e-9 || !isValid(replanned))
+            return false;
+        path.replace(first, last, replanned);
+        return true;
+    }
+
+    bool ManipulationSimplifier::isValid(const Trajectory &trajectory) const
+    {
+        for (std::size_t k = 0; k + 1 < trajectory.size(); ++k)
+            if (!si_->checkMotion(trajectory.state(k), trajectory.state(k + 1)))
+                return false;
+        return true;
+    }
+}  // namespace ompl_mm

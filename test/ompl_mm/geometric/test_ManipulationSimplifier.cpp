@@ -1,0 +1,192 @@
+// Tests for ManipulationSimplifier: a push there and back becomes no push at all, windows get
+// shorter and stay valid, the same seed gives the same path, and it refuses a space information
+// without the manipulation motion validator.
+#include "ompl_mm/geometric/ManipulationSimplifier.h"
+
+#include "common/MobileBlocked.h"
+
+#include <gtest/gtest.h>
+
+using namespace ompl_mm;
+using namespace ompl_mm::test;
+namespace ob = ompl::base;
+
+namespace
+{
+    const SegmentLabel PUSH_OBJ2 = pushOf(1);
+
+    /** MOBILE BLOCKED with obj2 in the open north of the centre, at (0, 1.4). */
+    Scene openScene()
+    {
+        Scene scene = mobileBlockedScene();
+        scene.objects[1].start.position = Eigen::Vector3d(0.0, 1.4, 0.0);
+        return scene;
+    }
+
+    /** A goal that asks only for the robot at (x, y), within 1 cm. */
+    class RobotAt : public ob::GoalRegion
+    {
+    public:
+        RobotAt(const ob::SpaceInformationPtr &si, double x, double y) : ob::GoalRegion(si), target_(x, y)
+        {
+            setThreshold(0.01);
+        }
+        double distanceGoal(const ob::State *state) const override
+        {
+            const double *q = si_->getStateSpace()->as<ManipulationStateSpace>()->robotValues(state);
+            return (Eigen::Vector2d(q[0], q[1]) - target_).norm();
+        }
+
+    private:
+        Eigen::Vector2d target_;
+    };
+
+    class Simplifier : public MobileBlockedTest
+    {
+    protected:
+        explicit Simplifier(const Scene &scene = openScene()) : MobileBlockedTest(scene) { si_->setup(); }
+
+        /** Appends a state: the start's objects with obj2 at (x2, y2), the robot at (x, y). */
+        void append(ManipulationPath &path, double x, double y, double x2, double y2, SegmentLabel label)
+        {
+            ob::State *state = startCopy();
+            setRobot(space_, state, x, y);
+            setObject(space_, state, 1, x2, y2);
+            if (path.getStateCount() == 0)
+                path.appendFirst(state);
+            else
+                path.appendLabelled(state, label);
+        }
+
+        /** obj2 pushed 0.3 m north, the robot walks around it to the north and pushes it back;
+            the last transit goes west. */
+        ManipulationPath roundTrip()
+        {
+            ManipulationPath path(si_);
+            append(path, 0.0, 0.7, 0.0, 1.4, TRANSIT);
+            append(path, 0.0, 1.4 - STANDOFF, 0.0, 1.4, TRANSIT);
+            append(path, 0.0, 1.7 - STANDOFF, 0.0, 1.7, PUSH_OBJ2);
+            append(path, -0.5, 1.7 - STANDOFF, 0.0, 1.7, TRANSIT);
+            append(path, -0.5, 1.7 + STANDOFF, 0.0, 1.7, TRANSIT);
+            append(path, 0.0, 1.7 + STANDOFF, 0.0, 1.7, TRANSIT);
+            append(path, 0.0, 1.4 + STANDOFF, 0.0, 1.4, PUSH_OBJ2);
+            append(path, -0.6, 1.4 + STANDOFF, 0.0, 1.4, TRANSIT);
+            return path;
+        }
+
+        /** Expects path to be valid, consistently labelled, and to start and end as original. */
+        void expectValidAndSameEnds(const ManipulationPath &path, const ManipulationPath &original) const
+        {
+            EXPECT_TRUE(path.check());
+            EXPECT_EQ(path.checkLabels(), "");
+            EXPECT_TRUE(space_.equalStates(path.getState(0), original.getState(0)));
+            EXPECT_TRUE(space_.equalStates(path.getState(path.getStateCount() - 1),
+                                           original.getState(original.getStateCount() - 1)));
+        }
+
+        ob::SpaceInformationPtr si_ = setup_.getSpaceInformation();
+        ManipulationSimplifier simplifier_{si_};
+    };
+
+    /** The simplifier in MOBILE BLOCKED as it is (obj2 at 0.8, -0.1). */
+    class SimplifierBlocked : public Simplifier
+    {
+    protected:
+        SimplifierBlocked() : Simplifier(mobileBlockedScene()) {}
+    };
+}  // namespace
+
+TEST_F(Simplifier, TheHandMadeRoundTripIsValid)
+{
+    const ManipulationPath path = roundTrip();
+    EXPECT_TRUE(path.check());
+    EXPECT_EQ(path.checkLabels(), "");
+    EXPECT_EQ(ManipulationSimplifier::countRoundTrips(path), 1u);
+    EXPECT_EQ(path.primitiveCounts().at("push"), 2u);
+}
+
+TEST_F(Simplifier, APushThereAndBackBecomesNoPush)
+{
+    ManipulationPath path = roundTrip();
+    const ManipulationPath original = path;
+    ompl::RNG rng(3);
+    const ManipulationSimplifier::Outcome outcome = simplifier_.simplify(path, 0, rng, nullptr);
+    EXPECT_EQ(outcome.roundTripsRemoved, 1u);
+    EXPECT_EQ(ManipulationSimplifier::countRoundTrips(path), 0u);
+    EXPECT_EQ(path.primitiveCounts().at("push"), 0u);
+    expectValidAndSameEnds(path, original);  // the robot was routed around obj2 where it pushed
+    for (std::size_t k = 0; k < path.getStateCount(); ++k)
+        EXPECT_FALSE(space_.objectMoves(path.getState(k), original.getState(0), 1))
+            << "obj2 stays, state " << k;
+}
+
+TEST_F(SimplifierBlocked, ANeededPushOutStaysAndOnlyTheReturnGoesWhenTheGoalAllows)
+{
+    // obj2 at its start closes the robot's corner south-east of it: the push out is needed, the
+    // push back is not, but without a goal the end of the path (obj2 back home) must stay
+    ManipulationPath path(si_);
+    append(path, 0.8, -1.01, 0.8, -0.1, TRANSIT);
+    append(path, 0.8, -0.1 - STANDOFF, 0.8, -0.1, TRANSIT);
+    append(path, 0.8, 0.3 - STANDOFF, 0.8, 0.3, PUSH_OBJ2);
+    append(path, 0.35, 0.3 - STANDOFF, 0.8, 0.3, TRANSIT);
+    append(path, 0.35, 0.3 + STANDOFF, 0.8, 0.3, TRANSIT);
+    append(path, 0.8, 0.3 + STANDOFF, 0.8, 0.3, TRANSIT);
+    append(path, 0.8, -0.1 + STANDOFF, 0.8, -0.1, PUSH_OBJ2);
+    append(path, 0.35, 0.9, 0.8, -0.1, TRANSIT);
+    ASSERT_TRUE(path.check());
+    ASSERT_EQ(ManipulationSimplifier::countRoundTrips(path), 1u);
+    const ManipulationPath original = path;
+    ompl::RNG rng(3);
+    EXPECT_EQ(simplifier_.simplify(path, 0, rng, nullptr).roundTripsRemoved, 0u);
+    EXPECT_EQ(path.getStateCount(), original.getStateCount());
+    EXPECT_EQ(path.primitiveCounts().at("push"), 2u);
+
+    const RobotAt goal(si_, 0.35, 0.9);
+    EXPECT_EQ(simplifier_.simplify(path, 0, rng, &goal).roundTripsRemoved, 1u);
+    EXPECT_EQ(ManipulationSimplifier::countRoundTrips(path), 0u);
+    EXPECT_EQ(path.primitiveCounts().at("push"), 1u);
+    EXPECT_TRUE(path.check());
+    EXPECT_EQ(path.checkLabels(), "");
+    const ob::State *end = path.getState(path.getStateCount() - 1);
+    EXPECT_TRUE(goal.isSatisfied(end));
+    EXPECT_NEAR((space_.objectPosition(end, 1) - Eigen::Vector3d(0.8, 0.3, 0.0)).norm(), 0.0, 1e-12)
+        << "obj2 stays where the push out left it";
+}
+
+TEST_F(Simplifier, ReplannedWindowsAreShorterAndValid)
+{
+    // a zig-zag of transits south of obj2, then a push of it in three steps
+    ManipulationPath path(si_);
+    append(path, 0.3, 0.0, 0.0, 1.4, TRANSIT);
+    append(path, 0.6, 0.5, 0.0, 1.4, TRANSIT);
+    append(path, 0.2, 0.4, 0.0, 1.4, TRANSIT);
+    append(path, 0.5, 0.8, 0.0, 1.4, TRANSIT);
+    append(path, 0.0, 1.4 - STANDOFF, 0.0, 1.4, TRANSIT);
+    for (double y : {1.5, 1.6, 1.7})
+        append(path, 0.0, y - STANDOFF, 0.0, y, PUSH_OBJ2);
+    ASSERT_TRUE(path.check());
+    const double before = path.toolPathLength();
+    const ManipulationPath original = path;
+    ompl::RNG rng(5);
+    const ManipulationSimplifier::Outcome outcome = simplifier_.simplify(path, 50, rng, nullptr);
+    EXPECT_GT(outcome.windowsReplanned, 0u);
+    EXPECT_LT(path.toolPathLength(), before - 0.5);
+    EXPECT_EQ(path.primitiveCounts().at("push"), 1u);
+    expectValidAndSameEnds(path, original);
+
+    // the same seed gives the same path
+    ManipulationPath again = original;
+    ompl::RNG same(5);
+    simplifier_.simplify(again, 50, same, nullptr);
+    ASSERT_EQ(again.getStateCount(), path.getStateCount());
+    for (std::size_t k = 0; k < path.getStateCount(); ++k)
+        EXPECT_TRUE(space_.equalStates(again.getState(k), path.getState(k))) << k;
+}
+
+TEST_F(Simplifier, NeedsTheManipulationMotionValidator)
+{
+    auto si = std::make_shared<ob::SpaceInformation>(setup_.getStateSpace());
+    si->setStateValidityChecker(setup_.getStateValidityChecker());
+    si->setup();
+    EXPECT_THROW(ManipulationSimplifier{si}, ompl::Exception);
+}
