@@ -5,6 +5,7 @@
 #include <fcl/fcl.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,12 +25,13 @@ namespace ompl_mm
     {
     public:
         /** A configuration to check: joint values, and per object its pose and resting surface
-            (-1 = held by the robot). */
+            (-1 = held by the robot); optionally only some of the bodies. */
         struct Configuration
         {
-            const double *joints{nullptr};                     ///< one value per moving joint
+            const double *joints{nullptr};                     ///< one value per moving joint; null: no robot
             const std::vector<ObjectPose> *objects{nullptr};   ///< one pose per object, world frame
             const std::vector<int> *restingSurfaces{nullptr};  ///< per object, its surface index or -1
+            const std::vector<char> *present{nullptr};         ///< per object, 0 to leave it out; null: all
         };
 
         /** Builds the bodies of the model's robot, objects and obstacles; shares the model.
@@ -46,6 +48,13 @@ namespace ompl_mm
             @pre the configuration's pointers are set and sized for the model. */
         bool isCollisionFree(const Configuration &configuration, std::string *contact = nullptr) const;
 
+        /** The first contact among some bodies, for checks before planning (of a start or of goal
+            poses): the robot at joints (left out when null) and the objects whose pose is given
+            (nullopt: left out), each resting on the surface that supports it or held if none does;
+            empty when they are collision-free. */
+        std::string contactAmong(const double *joints,
+                                 const std::vector<std::optional<ObjectPose>> &objects) const;
+
     private:
         struct Body
         {
@@ -60,6 +69,10 @@ namespace ompl_mm
         bool hitsObstacle(const Body &body, int allowedObstacle, std::string *contact) const;
         bool robotFree(const Configuration &configuration, std::string *contact) const;
         bool objectsFree(const Configuration &configuration, std::string *contact) const;
+        static bool isPresent(const Configuration &configuration, int object)
+        {
+            return !configuration.present || (*configuration.present)[object];
+        }
 
         ManipulationModelPtr model_;
         std::vector<Body> robotBodies_;

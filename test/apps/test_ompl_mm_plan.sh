@@ -186,6 +186,26 @@ expect_bad_edit "out-of-range planner parameter" planner_parameter_out_of_range 
 expect_bad_edit "goal on no support surface" goal_off_surface '<object name="obj3" xyz="-0.9 -0.9 *"' '<object name="obj3" xyz="3 3 *"' \
     'xyz="3 3 *"' "obj3"
 
+# impossible problems fail before planning, at the line that makes them impossible
+expect_bad_edit "object goal inside an obstacle" goal_in_obstacle '<object name="obj3" xyz="-0.9 -0.9 *"' '<object name="obj3" xyz="-1 0 *"' \
+    'xyz="-1 0 *"' "object 'obj3' and obstacle 'block1' collide at their goal poses"
+
+expect_bad_edit "robot goal inside an obstacle" robot_goal_in_obstacle '<robot joints="0 0" tolerance="0.01"/>' '<robot joints="-1 0" tolerance="0.01"/>' \
+    '<robot joints="-1 0" tolerance' "robot link 'body' and obstacle 'block1' collide at their goal poses"
+
+expect_bad_edit "object goal overlapping the robot goal" goal_on_robot_goal '<object name="obj3" xyz="-0.9 -0.9 *"' '<object name="obj3" xyz="0.3 0 *"' \
+    'xyz="0.3 0 *"' "robot link 'body' and object 'obj3' collide at their goal poses"
+
+expect_bad_edit "object goals overlapping each other" goals_overlap '<object name="obj3" xyz="-0.9 -0.9 *" yaw="*" tolerance="0.01"/>' \
+    '<object name="obj3" xyz="-0.9 -0.9 *" yaw="*" tolerance="0.01"/>\n    <object name="obj1" xyz="-1.2 -0.9 *"/>' \
+    'xyz="-0.9 -0.9 *" yaw' "object 'obj1' and object 'obj3' collide at their goal poses"
+
+expect_bad_edit "standoff smaller than robot and object" standoff_too_small '<push_mobile standoff="0.41"/>' '<push_mobile standoff="0.3"/>' \
+    'standoff="0.3"' "push_mobile standoff 0.3 leaves the robot overlapping object 'obj1'"
+
+expect_bad_edit "goal that no primitive can reach" no_primitive_moves_it '<push_mobile standoff="0.41"/>' '' \
+    'xyz="-0.9 -0.9 *"' "object 'obj3' must move to its goal but no primitive of the scene can move it there"
+
 expect_bad_option "--seed 0" "--seed" "$scene" --seed 0
 expect_bad_option "--seed -1" "--seed" "$scene" --seed -1
 expect_bad_option "--seed 2^32" "--seed" "$scene" --seed 4294967296

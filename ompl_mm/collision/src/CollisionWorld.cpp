@@ -136,11 +136,16 @@ namespace ompl_mm
 
     void CollisionWorld::placeBodies(const Configuration &configuration) const
     {
-        model_->robot().forwardKinematics(configuration.joints, model_->scene().robot.basePose, linkFrames_);
-        for (const Body &body : robotBodies_)
-            place(*body.object, linkFrames_[body.owner] * body.offset);
+        if (configuration.joints)
+        {
+            model_->robot().forwardKinematics(configuration.joints, model_->scene().robot.basePose,
+                                              linkFrames_);
+            for (const Body &body : robotBodies_)
+                place(*body.object, linkFrames_[body.owner] * body.offset);
+        }
         for (const Body &body : objectBodies_)
-            place(*body.object, objectFrame((*configuration.objects)[body.owner]) * body.offset);
+            if (isPresent(configuration, body.owner))
+                place(*body.object, objectFrame((*configuration.objects)[body.owner]) * body.offset);
     }
 
     bool CollisionWorld::hitsObstacle(const Body &body, int allowedObstacle, std::string *contact) const
@@ -166,7 +171,8 @@ namespace ompl_mm
                 return false;
             for (const Body &object : objectBodies_)
             {
-                if (link.gripper && (*configuration.restingSurfaces)[object.owner] < 0)
+                if (!isPresent(configuration, object.owner) ||
+                    (link.gripper && (*configuration.restingSurfaces)[object.owner] < 0))
                     continue;
                 if (narrowPhase(*link.object, *object.object))
                 {
@@ -190,11 +196,14 @@ namespace ompl_mm
     {
         for (std::size_t i = 0; i < objectBodies_.size(); ++i)
         {
+            if (!isPresent(configuration, static_cast<int>(i)))
+                continue;
             const int surface = (*configuration.restingSurfaces)[i];
             if (hitsObstacle(objectBodies_[i], surface >= 0 ? surfaceObstacle_[surface] : -1, contact))
                 return false;
             for (std::size_t j = i + 1; j < objectBodies_.size(); ++j)
-                if (narrowPhase(*objectBodies_[i].object, *objectBodies_[j].object))
+                if (isPresent(configuration, static_cast<int>(j)) &&
+                    narrowPhase(*objectBodies_[i].object, *objectBodies_[j].object))
                 {
                     if (contact)
                         *contact = objectBodies_[i].label + " and " + objectBodies_[j].label;
@@ -207,6 +216,25 @@ namespace ompl_mm
     bool CollisionWorld::isCollisionFree(const Configuration &configuration, std::string *contact) const
     {
         placeBodies(configuration);
-        return objectsFree(configuration, contact) && robotFree(configuration, contact);
+        return objectsFree(configuration, contact) &&
+               (!configuration.joints || robotFree(configuration, contact));
+    }
+
+    std::string CollisionWorld::contactAmong(const double *joints,
+                                             const std::vector<std::optional<ObjectPose>> &objects) const
+    {
+        std::vector<ObjectPose> poses(objects.size());
+        std::vector<int> resting(objects.size(), -1);
+        std::vector<char> present(objects.size(), 0);
+        for (std::size_t i = 0; i < objects.size(); ++i)
+            if (objects[i])
+            {
+                poses[i] = *objects[i];
+                resting[i] = model_->scene().restingSurface(poses[i].position);
+                present[i] = 1;
+            }
+        std::string contact;
+        isCollisionFree({joints, &poses, &resting, &present}, &contact);
+        return contact;
     }
 }  // namespace ompl_mm

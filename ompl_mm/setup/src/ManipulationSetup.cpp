@@ -2,6 +2,7 @@
 
 #include "ompl_core/io/InputError.h"
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
+#include "ompl_mm/setup/ProblemCheck.h"
 
 namespace ompl_mm
 {
@@ -39,6 +40,7 @@ namespace ompl_mm
         setGoal(goal_);
         primitives_ = factory.build(scene.primitives, space_.get());
         si_->setMotionValidator(std::make_shared<ManipulationMotionValidator>(si_, primitives_));
+        ProblemCheck(*space_).checkGoal(getProblemDefinition()->getStartState(0), primitives_);
         setPlannerByName(scene.planner);
         ompl_core::applyParameters(*planner_, scene.plannerParams);
     }
@@ -86,7 +88,7 @@ namespace ompl_mm
         }
         const std::string reason = checker_->explain(start.get());
         if (!reason.empty())
-            throw ompl_core::InputError(scene.robotStartWhere, "the start state is invalid: " + reason);
+            ProblemCheck(*space_).rejectStart(start.get(), reason);
         setStartState(start);
     }
 

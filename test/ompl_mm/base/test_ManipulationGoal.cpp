@@ -145,16 +145,17 @@ TEST_F(MobileGoal, NanCoordinateIsNotSatisfied)
 
 TEST_F(MobileGoal, YawGoalUsesTheShortAngle)
 {
+    // the goal alone: a ManipulationSetup rejects a yaw goal that no primitive of the scene can turn to
     Scene scene = mobileBlockedScene();
     scene.objectGoals[0].yaw = 3.1;
-    ManipulationSetup setup(scene);
-    const ManipulationStateSpace &space = *setup.manipulationSpace();
-    ob::State *s = space.cloneState(state_);
-    setRobot(space, s, 0.0, 0.0);
-    setObject(space, s, OBJ3, -0.9, -0.9, 0.0, -3.1);
+    auto space = std::make_shared<ManipulationStateSpace>(makeModel(scene));
+    const ManipulationGoal goal(std::make_shared<ob::SpaceInformation>(space));
+    ob::State *s = space->cloneState(state_);
+    setRobot(*space, s, 0.0, 0.0);
+    setObject(*space, s, OBJ3, -0.9, -0.9, 0.0, -3.1);
     // -3.1 and 3.1 are 2 pi - 6.2 apart
-    EXPECT_NEAR(setup.manipulationGoal()->distanceGoal(s), (2 * M_PI - 6.2) - 0.05, 1e-9);
-    space.freeState(s);
+    EXPECT_NEAR(goal.distanceGoal(s), (2 * M_PI - 6.2) - 0.05, 1e-9);
+    space->freeState(s);
 }
 
 TEST(ManipulationGoalInput, ImpossibleGoalsThrowWithTheSceneLine)
@@ -208,6 +209,7 @@ TEST(ManipulationGoalInput, RobotGoalOnItsLimitsIsAcceptedAndJustBeyondNamesJoin
     const Scene base = mobileBlockedScene();
     const std::string line = base.robotGoal.where.str() + ": ";
     Scene scene = base;
+    scene.obstacles.clear();  // the walls would make a goal at a limit collide
     scene.robotGoal.joints = {2.5, -2.5};
     EXPECT_EQ(setupError(scene), "");
     scene.robotGoal.joints = {-2.5, 2.5};
@@ -250,6 +252,7 @@ TEST(ManipulationGoalInput, ObjectGoalOnTheSurfaceEdgeOrWithinTheRestToleranceIs
     for (const auto &position : inside)
     {
         Scene scene = base;
+        scene.obstacles.clear();  // the walls would make a goal on the floor's edge collide
         scene.objectGoals[0].position = position;
         EXPECT_EQ(setupError(scene), "");
     }

@@ -1,0 +1,49 @@
+#pragma once
+
+#include "ompl_mm/collision/CollisionWorld.h"
+#include "ompl_mm/primitives/Primitive.h"
+
+#include <vector>
+
+namespace ompl_mm
+{
+    /** What can be decided about a manipulation problem before any planning, each fault reported
+        as an ompl_core::InputError at the scene line it comes from, so that an impossible problem
+        fails at once instead of running to the time limit:
+        - the start: which object (or the robot) collides with what;
+        - the goal: an object's goal pose, or the robot's goal (when every joint is given), in
+          collision with obstacles; goal poses that overlap each other; an object whose goal is
+          away from its start but that no primitive of the scene can move there (the empty-space
+          planner, obstacles aside, cannot chain primitives that get it there).
+        Only fully given goal poses are checked for collisions (x and y given; z and yaw default to
+        the start's); objects without a goal are left out, since they may be moved away. */
+    class ProblemCheck
+    {
+    public:
+        /** Checks for the problem of space's model. @pre space outlives the check. */
+        explicit ProblemCheck(const ManipulationStateSpace &space);
+
+        /** Throws when the start, found invalid for `reason`, has a collision: at the line of the
+            object involved (the robot's start line for the robot alone), else at the robot's
+            start line with reason. */
+        [[noreturn]] void rejectStart(const ompl::base::State *start, const std::string &reason) const;
+
+        /** Throws at the goal's line when the goal is impossible in one of the ways above. */
+        void checkGoal(const ompl::base::State *start, const std::vector<PrimitivePtr> &primitives) const;
+
+    private:
+        /** The goal pose of an object whose goal gives x and y (z and yaw from start where not
+            given), or nothing. */
+        std::optional<ObjectPose> goalPose(const ObjectGoal &goal, const ompl::base::State *start) const;
+        /** The first collision among the robot (at joints, or left out when null) and the given
+            object poses, checked alone, in pairs and with the robot; throws it at its line with
+            the message's beginning. */
+        void rejectCollisions(const double *joints, const ompl_core::SourceLocation &robotWhere,
+                              const std::vector<std::optional<ObjectPose>> &poses,
+                              const std::vector<ompl_core::SourceLocation> &wheres, const std::string &what,
+                              const std::string &when) const;
+
+        const ManipulationStateSpace &space_;
+        CollisionWorld world_;
+    };
+}  // namespace ompl_mm
