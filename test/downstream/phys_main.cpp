@@ -1,5 +1,6 @@
 // downstream_phys: the smallest program that uses an installed ompl_phys.
-// Usage: downstream_phys SCENE.xml; exit 0 when the scene is solved and the controls, re-simulated,
+// Usage: downstream_phys [SCENE.xml]; without a scene it plans the installed physics scene 1 (the
+// package's ompl_phys_SCENES_DIR). Exit 0 when the scene is solved and the controls, re-simulated,
 // reach the goal.
 #include <ompl_phys/control/PathSimulation.h>
 #include <ompl_phys/control/PhysicsSetup.h>
@@ -8,19 +9,21 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include <iostream>
+#include <string>
 
 int main(int argc, char **argv)
 {
-    if (argc != 2)
+    if (argc > 2)
     {
-        std::cerr << "usage: downstream_phys SCENE.xml\n";
+        std::cerr << "usage: downstream_phys [SCENE.xml]\n";
         return 2;
     }
+    const std::string file = argc == 2 ? argv[1] : SCENES_DIR "/scene1.xml";
     try
     {
         ompl::RNG::setSeed(1);
         // read the problem: robot, bodies with their knowledge, limits, goal
-        const ompl_phys::PhysicsScene scene = ompl_phys::loadPhysicsScene(argv[1]);
+        const ompl_phys::PhysicsScene scene = ompl_phys::loadPhysicsScene(file);
 
         // a control::SimpleSetup with the ODE propagator; pick any OMPL control planner
         ompl_phys::PhysicsSetup setup(scene);

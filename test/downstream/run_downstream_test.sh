@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Installs the project into a scratch prefix, builds the downstream project in test/downstream
-# against it with find_package(ompl_mm) and find_package(ompl_phys), and plans the installed
-# mobile_blocked.xml and physics/scene1.xml scenes with it.
+# Installs the project into a scratch prefix (not /usr), builds the downstream project in
+# test/downstream against it with find_package(ompl_mm) and find_package(ompl_phys), and plans the
+# installed mobile_blocked.xml and physics/scene1.xml scenes with it, found through the packages'
+# ompl_mm_SCENES_DIR and ompl_phys_SCENES_DIR.
 # Usage: run_downstream_test.sh BUILD_DIR SOURCE_DIR SCRATCH_DIR
 set -u
 
@@ -45,16 +46,16 @@ cmake -S "$source_dir/test/downstream" -B "$downstream_build" -DCMAKE_PREFIX_PAT
 echo "== build"
 cmake --build "$downstream_build" -j 2 || fail "building the downstream project"
 
-echo "== run on $scene"
-"$downstream_build/downstream_plan" "$scene"
+echo "== run on the package's scene (ompl_mm_SCENES_DIR)"
+"$downstream_build/downstream_plan"
 status=$?
-[ $status -eq 0 ] || fail "downstream_plan $scene exited with $status (expected 0)"
+[ $status -eq 0 ] || fail "downstream_plan exited with $status (expected 0)"
 
 phys_scene=$prefix/share/ompl_mm/scenes/physics/scene1.xml
 [ -f "$phys_scene" ] || fail "installed scene missing: $phys_scene"
-echo "== run on $phys_scene"
-"$downstream_build/downstream_phys" "$phys_scene"
+echo "== run on the package's physics scene (ompl_phys_SCENES_DIR)"
+"$downstream_build/downstream_phys"
 status=$?
-[ $status -eq 0 ] || fail "downstream_phys $phys_scene exited with $status (expected 0)"
+[ $status -eq 0 ] || fail "downstream_phys exited with $status (expected 0)"
 
 echo "downstream test passed"
