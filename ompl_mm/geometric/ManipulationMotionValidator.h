@@ -35,7 +35,8 @@ namespace ompl_mm
         std::optional<SegmentLabel> explain(const ompl::base::State *s1, const ompl::base::State *s2) const;
 
         /** OMPL's hook: true when a primitive explains the motion and every state along it
-            (including s2, not s1) is valid. */
+            (including s2, not s1) is valid; the states are checked in halving order, as OMPL's
+            DiscreteMotionValidator does, so that collisions show early. */
         bool checkMotion(const ompl::base::State *s1, const ompl::base::State *s2) const override;
         /** OMPL's hook: as above; when invalid, lastValid holds the last valid state along the
             motion (s1 when no primitive explains it) and its fraction of the way. */

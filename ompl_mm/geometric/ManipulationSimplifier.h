@@ -16,10 +16,15 @@ namespace ompl_mm
            left where it was (the pushes become the robot's transits, routed around the object
            where they meet it) or, when that fails, left where the last return push found it if
            the goal still holds;
-        2. replans random windows of the path with the empty-space planner (the primitives
-           chained straight from the window's first to its last state: a straight transit, one
-           push instead of several of the same object, …) and keeps a window when every motion of
-           it is valid and the tool travels less.
+        2. runs the steps of OMPL's PathSimplifier (shortcuts, B-spline smoothing, vertex
+           reduction), seeded from the caller's RNG, on a copy kept when all of it is valid and
+           shorter; with the motion validator they shorten push runs as well as transit runs but
+           never make an object move on its own;
+        3. replans random windows of the path, from the start of one primitive run to the end of
+           a later one, with the empty-space planner (the primitives chained straight from the
+           window's first to its last state: one push instead of several of the same object, no
+           detour between them, …) and keeps a window when every motion of it is valid and the
+           tool travels less.
         Every change is checked with the ManipulationMotionValidator, so the result is as valid as
         the input. Deterministic for a given RNG state. */
     class ManipulationSimplifier
@@ -57,6 +62,8 @@ namespace ompl_mm
         bool holdObject(ManipulationPath &path, unsigned int object, const ObjectPose &pose,
                         std::size_t first, std::size_t last, const ompl::base::Goal *goal,
                         ompl::RNG &rng) const;
+        /** Shortens path with the steps of OMPL's PathSimplifier (see the class comment). */
+        void shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng) const;
         /** Replans states first … last with the empty-space planner; true when the path changed. */
         bool replanWindow(ManipulationPath &path, std::size_t first, std::size_t last, ompl::RNG &rng) const;
         /** True when every segment of the trajectory is a valid motion. */

@@ -87,7 +87,7 @@ namespace ompl_mm
         void setRestartIterations(unsigned int iterations) { restartIterations_ = iterations; }
         /** Iterations of the first run before a restart; 0 when the planner never restarts. */
         unsigned int getRestartIterations() const { return restartIterations_; }
-        /** Random windows of the solution that ManipulationSimplifier tries to replan; 100 by default. */
+        /** Random windows of the solution that ManipulationSimplifier tries to replan; 30 by default. */
         void setSmoothingAttempts(unsigned int attempts) { smoothingAttempts_ = attempts; }
         /** Random windows of the solution that ManipulationSimplifier tries to replan. */
         unsigned int getSmoothingAttempts() const { return smoothingAttempts_; }
@@ -151,7 +151,7 @@ namespace ompl_mm
         ompl::RNG rng_;
         double connectStep_{0.05};
         double vertexStep_{0.35};
-        unsigned int smoothingAttempts_{100};
+        unsigned int smoothingAttempts_{30};
         unsigned int restartIterations_{10000};
         MOPLStatistics statistics_;
     };

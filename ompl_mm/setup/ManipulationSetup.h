@@ -4,10 +4,13 @@
 #include "ompl_mm/base/ManipulationGoal.h"
 #include "ompl_mm/base/ManipulationValidityChecker.h"
 #include "ompl_mm/geometric/ManipulationPath.h"
+#include "ompl_mm/geometric/ManipulationSimplifier.h"
 #include "ompl_mm/planners/MOPL.h"
 #include "ompl_mm/primitives/PrimitiveFactory.h"
 
 #include <ompl/geometric/SimpleSetup.h>
+
+#include <cstdint>
 
 namespace ompl_mm
 {
@@ -53,6 +56,12 @@ namespace ompl_mm
         /** The solution as a ManipulationPath, owned by the problem definition (valid until its
             solutions are cleared). @throws ompl::Exception when there is none. */
         ManipulationPath &manipulationPath() const;
+        /** Mode-aware smoothing of the solution in place (ManipulationSimplifier, as MOPL applies it
+            to its solutions): pointless pushes removed, `attempts` random windows replanned,
+            drawing from an RNG seeded with seed. Unlike SimpleSetup::simplifySolution it can drop
+            manipulation. @throws ompl::Exception when there is no solution. */
+        ManipulationSimplifier::Outcome smoothSolution(unsigned int attempts = 30,
+                                                       std::uint_fast32_t seed = 1);
 
     private:
         void setStartFromScene(const Scene &scene);

@@ -3,6 +3,7 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <queue>
 
 namespace ompl_mm
 {

@@ -1,6 +1,9 @@
 #include "ompl_mm/geometric/ManipulationSimplifier.h"
 
+#include <ompl/geometric/PathSimplifier.h>
 #include <ompl/util/Exception.h>
+
+#include <limits>
 
 namespace ompl_mm
 {
@@ -9,6 +12,8 @@ namespace ompl_mm
         constexpr double SAME_POSE = 1e-6;
         // RRT iterations to route the robot around an object it no longer pushes
         constexpr unsigned int CONNECT_ITERATIONS = 500;
+        // rounds of OMPL's shortcut, smoothing and vertex reduction steps
+        constexpr unsigned int OMPL_ROUNDS = 2;
 
         /** The runs of consecutive segments that push `object`: first and last state of each. */
         std::vector<std::pair<std::size_t, std::size_t>> pushRuns(const ManipulationPath &path,
@@ -31,6 +36,30 @@ namespace ompl_mm
         bool samePose(const ObjectPose &a, const ObjectPose &b)
         {
             return (a.position - b.position).norm() < SAME_POSE && std::abs(a.yaw - b.yaw) < SAME_POSE;
+        }
+
+        /** OMPL's path simplifier drawing from a seed of ours, so that a simplification repeats
+            per seed (its own RNG is seeded from OMPL's global seed sequence). */
+        class SeededPathSimplifier : public ompl::geometric::PathSimplifier
+        {
+        public:
+            SeededPathSimplifier(const ompl::base::SpaceInformationPtr &si, std::uint_fast32_t seed)
+                : ompl::geometric::PathSimplifier(si)
+            {
+                rng_.setLocalSeed(seed);
+            }
+        };
+
+        /** The path's first and last state and every state where the label changes. */
+        std::vector<std::size_t> runBoundaries(const ManipulationPath &path)
+        {
+            const std::vector<SegmentLabel> &labels = path.labels();
+            std::vector<std::size_t> bounds{0};
+            for (std::size_t i = 1; i < labels.size(); ++i)
+                if (labels[i] != labels[i - 1])
+                    bounds.push_back(i);
+            bounds.push_back(labels.size());
+            return bounds;
         }
 
         double toolTravel(const Trajectory &trajectory)
@@ -64,12 +93,18 @@ namespace ompl_mm
         path.removeRepeatedStates();
         while (removeRoundTrip(path, goal, rng))
             ++outcome.roundTripsRemoved;
-        for (unsigned int attempt = 0; attempt < windowAttempts && path.getStateCount() > 2; ++attempt)
+        shortenWithOMPL(path, rng);
+        // windows from one primitive run's start to a later run's end: what OMPL's shortcuts cannot
+        // do, since they keep every manipulation, is to chain primitives anew across runs
+        for (unsigned int attempt = 0; attempt < windowAttempts; ++attempt)
         {
-            const int n = static_cast<int>(path.getStateCount());
+            const std::vector<std::size_t> bounds = runBoundaries(path);
+            if (bounds.size() < 3)
+                break;
+            const int n = static_cast<int>(bounds.size());
             const int first = rng.uniformInt(0, n - 3);
             const int last = rng.uniformInt(first + 2, n - 1);
-            if (replanWindow(path, first, last, rng))
+            if (replanWindow(path, bounds[first], bounds[last], rng))
                 ++outcome.windowsReplanned;
         }
         path.removeRepeatedStates();
@@ -174,6 +209,29 @@ namespace ompl_mm
             return false;
         path.replace(first, last, replanned);
         return true;
+    }
+
+    void ManipulationSimplifier::shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng) const
+    {
+        // OMPL's own shortcutting and smoothing is safe here, since the motion validator accepts
+        // only primitives' motions and the path relabels what it changes. Its steps, not
+        // simplifyMax(), whose repair of a motion that fails a recheck samples random states in
+        // place (objects and all); a copy, kept only when all of it checks at the resolution
+        ManipulationPath shorter(path);
+        SeededPathSimplifier simplifier(si_, rng.uniformInt(1, std::numeric_limits<int>::max()));
+        for (unsigned int round = 0; round < OMPL_ROUNDS; ++round)
+        {
+            bool changed = false;
+            for (unsigned int k = 0; k < 5 && simplifier.shortcutPath(shorter); ++k)
+                changed = true;
+            simplifier.smoothBSpline(shorter, 3, shorter.length() / 100.0);
+            changed = simplifier.reduceVertices(shorter) || changed;
+            changed = simplifier.collapseCloseVertices(shorter) || changed;
+            if (!changed)
+                break;
+        }
+        if (shorter.check() && shorter.toolPathLength() < path.toolPathLength())
+            path = shorter;
     }
 
     bool ManipulationSimplifier::isValid(const Trajectory &trajectory) const

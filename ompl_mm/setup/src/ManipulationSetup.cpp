@@ -99,4 +99,11 @@ namespace ompl_mm
             throw ompl::Exception("ManipulationSetup", "no manipulation path has been found");
         return *path;
     }
+
+    ManipulationSimplifier::Outcome ManipulationSetup::smoothSolution(unsigned int attempts,
+                                                                      std::uint_fast32_t seed)
+    {
+        ompl::RNG rng(seed);
+        return ManipulationSimplifier(si_).simplify(manipulationPath(), attempts, rng, goal_.get());
+    }
 }  // namespace ompl_mm

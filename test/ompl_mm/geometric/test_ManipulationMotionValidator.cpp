@@ -165,6 +165,18 @@ TEST_F(MotionValidation, WithoutTheValidatorChangedPathsAreReported)
     EXPECT_THROW(path.labels(), ompl::Exception);
 }
 
+TEST_F(MotionValidation, WorksOnASpaceInformationOfYourOwn)
+{
+    auto si = std::make_shared<ob::SpaceInformation>(setup_.getStateSpace());
+    si->setStateValidityChecker(setup_.getStateValidityChecker());
+    si->setMotionValidator(std::make_shared<ManipulationMotionValidator>(si, setup_.primitives()));
+    si->setup();
+    ob::State *slid = startCopy();
+    setObject(space_, slid, 1, 0.8, 0.3);
+    EXPECT_FALSE(si->checkMotion(startCopy(), slid));
+    EXPECT_TRUE(si->checkMotion(from_, to_));
+}
+
 TEST_F(MotionValidation, OMPLsSimplifierKeepsPushesPushes)
 {
     // a push made of three collinear steps becomes one push; the transit before it straightens

@@ -77,3 +77,21 @@ TEST(OmplTools, SimplifySolutionKeepsTheLabelsTrue)
     EXPECT_TRUE(path.check());
     planarRecheck(*setup.manipulationSpace(), path, scene);
 }
+
+TEST(OmplTools, OurSmoothingAfterOMPLsKeepsThePathValidAndShortensIt)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const Scene scene = mobileBlockedScene();
+    ManipulationSetup setup(scene);
+    setup.mopl()->setSmoothingAttempts(0);  // MOPL's own smoothing off: leave work for the call
+    setup.mopl()->setSeed(1);
+    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(20000)),
+              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    setup.simplifySolution();
+    const double before = setup.manipulationPath().toolPathLength();
+    setup.smoothSolution(200, 3);
+    const ManipulationPath &path = setup.manipulationPath();
+    EXPECT_LT(path.toolPathLength(), before);
+    EXPECT_EQ(ManipulationSimplifier::countRoundTrips(path), 0u);
+    planarRecheck(*setup.manipulationSpace(), path, scene);
+}
