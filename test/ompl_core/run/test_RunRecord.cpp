@@ -7,6 +7,7 @@
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Exception.h>
 
 #include <gtest/gtest.h>
@@ -178,4 +179,27 @@ TEST(RunResult, TakesSolvedApproximateAndStatusFromTheProblem)
     EXPECT_EQ(result.status, "Timeout");
     EXPECT_EQ(result.time, 1.25);
     EXPECT_TRUE(result.details.empty());
+}
+
+TEST(RunResult, AnApproximateSolutionIsNotSolved)
+{
+    auto space = std::make_shared<ompl::base::RealVectorStateSpace>(2);
+    space->setBounds(0.0, 1.0);
+    auto si = std::make_shared<ompl::base::SpaceInformation>(space);
+    si->setup();
+    ompl::base::ProblemDefinition pdef(si);
+    auto path = std::make_shared<ompl::geometric::PathGeometric>(si);
+    pdef.addSolutionPath(path, true, 0.3, "p");
+    const RunResult approximate =
+        runResult({"s", "p", 1, 2.0}, pdef, ompl::base::PlannerStatus::APPROXIMATE_SOLUTION, 2.0);
+    EXPECT_FALSE(approximate.solved);
+    EXPECT_TRUE(approximate.approximate);
+    EXPECT_EQ(approximate.status, "Approximate solution");
+
+    pdef.clearSolutionPaths();
+    pdef.addSolutionPath(path, false, 0.0, "p");
+    const RunResult exact =
+        runResult({"s", "p", 1, 2.0}, pdef, ompl::base::PlannerStatus::EXACT_SOLUTION, 0.5);
+    EXPECT_TRUE(exact.solved);
+    EXPECT_FALSE(exact.approximate);
 }
