@@ -26,7 +26,8 @@ namespace ompl_mm
            detour between them, …) and keeps a window when every motion of it is valid and the
            tool travels less.
         Every change is checked with the ManipulationMotionValidator, so the result is as valid as
-        the input. Deterministic for a given RNG state. */
+        the input. Deterministic for a given RNG state. Not thread-safe (it reuses its empty-space
+        planner's scratch space). */
     class ManipulationSimplifier
     {
     public:

@@ -123,6 +123,11 @@ TEST(MOPL, ReportsTimeoutWhenGoalIsWalledIn)
     setup.mopl()->setSeed(1);
     EXPECT_EQ(setup.solve(0.5), ompl::base::PlannerStatus::TIMEOUT);
     EXPECT_FALSE(setup.getProblemDefinition()->hasExactSolution());
+    ompl::base::PlannerData data(setup.getSpaceInformation());
+    setup.getPlannerData(data);
+    EXPECT_EQ(data.properties.count("solution tool path length REAL"), 0u)
+        << "no solution, no solution properties";
+    EXPECT_EQ(data.properties.count("iterations INTEGER"), 1u);
 }
 
 TEST(MOPL, TreeVerticesLieAtMostAVertexStepApart)
