@@ -79,6 +79,8 @@ namespace ompl_mm
             rest interpolate per subspace. state may be from or to. */
         void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t,
                          ompl::base::State *state) const override;
+        /** OMPL's hook: a ManipulationStateSampler (near samples move only the robot). */
+        ompl::base::StateSamplerPtr allocDefaultStateSampler() const override;
         /** OMPL's hook: prints the joints and each object's name, position and yaw on one line. */
         void printState(const ompl::base::State *state, std::ostream &out) const override;
 

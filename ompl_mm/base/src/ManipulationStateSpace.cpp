@@ -1,5 +1,7 @@
 #include "ompl_mm/base/ManipulationStateSpace.h"
 
+#include "ompl_mm/base/ManipulationStateSampler.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -163,6 +165,11 @@ namespace ompl_mm
     Eigen::Vector3d ManipulationStateSpace::toolPosition(const ob::State *state) const
     {
         return model_->toolFrame(robotValues(state)).translation();
+    }
+
+    ob::StateSamplerPtr ManipulationStateSpace::allocDefaultStateSampler() const
+    {
+        return std::make_shared<ManipulationStateSampler>(this);
     }
 
     double ManipulationStateSpace::toolTravel(const ob::State *from, const ob::State *to) const

@@ -7,6 +7,22 @@
 
 namespace ompl_mm
 {
+    namespace
+    {
+        /** The number of check steps: the space's valid segment count rounded up to a power of two,
+            so that the states checked along a motion include those of its halves, quarters, …
+            (subdividing a valid motion, as OMPL's B-spline smoothing does, yields valid motions). */
+        unsigned int dyadicSteps(const ompl::base::StateSpace &space, const ompl::base::State *s1,
+                                 const ompl::base::State *s2)
+        {
+            const unsigned int needed = std::max(1u, space.validSegmentCount(s1, s2));
+            unsigned int steps = 1;
+            while (steps < needed)
+                steps *= 2;
+            return steps;
+        }
+    }  // namespace
+
     ManipulationMotionValidator::ManipulationMotionValidator(const ompl::base::SpaceInformationPtr &si,
                                                              std::vector<PrimitivePtr> primitives)
         : ompl::base::MotionValidator(si), primitives_(std::move(primitives))
@@ -28,7 +44,7 @@ namespace ompl_mm
         const ompl::base::State *s1, const ompl::base::State *s2) const
     {
         const ompl::base::StateSpace &space = *si_->getStateSpace();
-        StepCheck check{std::max(1u, space.validSegmentCount(s1, s2)), 0};
+        StepCheck check{dyadicSteps(space, s1, s2), 0};
         ompl::base::State *state = si_->allocState();
         while (check.valid < check.steps)
         {

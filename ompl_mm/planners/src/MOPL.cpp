@@ -469,7 +469,8 @@ namespace ompl_mm
         // length in the whole state space
         const auto *solution =
             pdef_ ? dynamic_cast<const ManipulationPath *>(pdef_->getSolutionPath().get()) : nullptr;
-        if (solution)
+        // a path that something changed into motions no primitive makes has no counts to give
+        if (solution && solution->checkLabels().empty())
         {
             data.properties["solution tool path length REAL"] = ompl::toString(solution->toolPathLength());
             for (const auto &[kind, count] : solution->primitiveCounts())

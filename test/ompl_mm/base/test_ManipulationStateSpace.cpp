@@ -269,3 +269,29 @@ TEST_F(MobileSpace, InterpolationStartsAndEndsAtItsEndpoints)
     space_.freeState(at);
     space_.freeState(to);
 }
+
+TEST(ManipulationStateSampler, NearSamplesKeepTheObjectsAndMoveTheRobotWithinTheDistance)
+{
+    const ManipulationStateSpacePtr space =
+        std::make_shared<ManipulationStateSpace>(makeModel(mobileBlockedScene()));
+    const ompl::base::StateSamplerPtr sampler = space->allocStateSampler();
+    ompl::base::State *near = space->allocState();
+    ompl::base::State *state = space->allocState();
+    bool robotMoved = false;
+    for (int i = 0; i < 100; ++i)
+    {
+        sampler->sampleUniform(near);
+        sampler->sampleUniformNear(state, near, 0.3);
+        for (unsigned int o = 0; o < space->objectCount(); ++o)
+            EXPECT_FALSE(space->objectMoves(near, state, o));
+        const double *a = space->robotValues(near);
+        const double *b = space->robotValues(state);
+        EXPECT_LE(std::max(std::abs(a[0] - b[0]), std::abs(a[1] - b[1])), 0.3 + 1e-12);
+        robotMoved = robotMoved || space->robotMoves(near, state);
+        sampler->sampleGaussian(state, near, 0.1);
+        EXPECT_FALSE(space->anyObjectMoves(near, state));
+    }
+    EXPECT_TRUE(robotMoved);
+    space->freeState(near);
+    space->freeState(state);
+}

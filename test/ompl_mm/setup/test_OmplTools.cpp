@@ -3,6 +3,7 @@
 // Every simplified path is re-checked independently (common/PlanarRecheck.h).
 #include "common/PlanarRecheck.h"
 
+#include <ompl/base/PlannerData.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/util/Console.h>
@@ -59,6 +60,10 @@ TEST(OmplTools, CheckRejectsAnObjectMovedWithoutAPush)
     ASSERT_TRUE(setup.getSpaceInformation()->isValid(path.getState(1)));
     EXPECT_FALSE(path.check());
     EXPECT_NE(path.checkLabels(), "");
+    // Benchmark reads planner data after simplifying: a broken path gives no counts, and no throw
+    ompl::base::PlannerData data(setup.getSpaceInformation());
+    EXPECT_NO_THROW(setup.getPlannerData(data));
+    EXPECT_EQ(data.properties.count("solution tool path length REAL"), 0u);
 }
 
 TEST(OmplTools, SimplifySolutionKeepsTheLabelsTrue)
