@@ -3,6 +3,7 @@
 #include <ompl/base/SpaceInformation.h>
 
 #include <iomanip>
+#include <vector>
 
 namespace ompl_mm
 {
@@ -17,6 +18,7 @@ namespace ompl_mm
             out << ' ' << object.name << ".x " << object.name << ".y " << object.name << ".z " << object.name
                 << ".yaw";
         out << '\n' << std::setprecision(10);
+        const std::vector<SegmentLabel> &labels = path.labels();  // checked once, not per waypoint
         for (std::size_t i = 0; i < path.getStateCount(); ++i)
         {
             const ompl::base::State *state = path.getState(i);
@@ -24,7 +26,7 @@ namespace ompl_mm
                 out << "start -";
             else
             {
-                const SegmentLabel &label = path.label(i - 1);
+                const SegmentLabel &label = labels[i - 1];
                 out << primitiveKindName(label.kind) << ' '
                     << (label.object >= 0 ? model.scene().objects[label.object].name : std::string("-"));
             }

@@ -233,12 +233,13 @@ namespace ompl_mm
         {
             const ManipulationStateSpace &space = *setup.manipulationSpace();
             ompl::base::ScopedState<> between(setup.getStateSpace());
+            const std::vector<SegmentLabel> &labels = path.labels();  // checked once, not per waypoint
             for (std::size_t i = 0; i < path.getStateCount(); ++i)
             {
                 picture.waypoints.push_back(space.toolPosition(path.getState(i)).head<2>());
-                if (i + 1 == path.getStateCount() || i >= path.labels().size())
+                if (i + 1 == path.getStateCount() || i >= labels.size())
                     continue;
-                const SegmentLabel &label = path.label(i);
+                const SegmentLabel &label = labels[i];
                 ToolSegment segment{label.kind, {}};
                 for (unsigned int k = 0; k <= SUB_STEPS; ++k)
                 {
