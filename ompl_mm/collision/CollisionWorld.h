@@ -1,9 +1,11 @@
 #pragma once
 
+#include "ompl_mm/collision/MotionBounds.h"
 #include "ompl_mm/model/ManipulationModel.h"
 
 #include <fcl/fcl.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -55,6 +57,35 @@ namespace ompl_mm
         std::string contactAmong(const double *joints,
                                  const std::vector<std::optional<ObjectPose>> &objects) const;
 
+        /** Least distance between bodies that move relative to each other along a motion, metres;
+            about FCL's distance precision. */
+        static constexpr double MIN_CLEARANCE = 1e-5;
+        /** Clearance a motion keeps at the fraction it reports as safe (SweepCheck), metres: a
+            planner that stops there can leave again without grazing. */
+        static constexpr double SAFE_CLEARANCE = 1e-3;
+        /** Most distance rounds of one motion check; a motion that grazes a body so closely that it
+            needs more is rejected. */
+        static constexpr unsigned int MAX_SWEEP_ROUNDS = 4000;
+
+        /** The outcome of a continuous motion check. */
+        struct SweepCheck
+        {
+            bool free;            ///< every configuration along the motion is collision-free
+            double safeFraction;  ///< a fraction of the way up to which it is free, with SAFE_CLEARANCE there
+        };
+
+        /** Continuous collision check of a motion from one configuration to another, under the
+            contact rules of isCollisionFree (a contact allowed at both ends is allowed along the
+            motion): conservative advancement, each round measuring the distances of the body pairs
+            that may meet and advancing as far as their sweeps (MotionBounds) cannot close them. So a
+            motion it accepts is free at every point, and any part of it is accepted as well, to
+            within FCL's distance precision and MAX_SWEEP_ROUNDS. The joints must move linearly
+            and each object slide or be carried with the tool (held at one end at least);
+            configurationAt(t) returns the configuration at fraction t (its pointers stay valid
+            until the next call). @pre both configurations' pointers are set, for all bodies. */
+        SweepCheck checkSweep(const Configuration &from, const Configuration &to,
+                              const std::function<Configuration(double)> &configurationAt) const;
+
     private:
         struct Body
         {
@@ -63,7 +94,17 @@ namespace ompl_mm
             int owner;                 ///< link index or object index
             std::string label;
             bool gripper{false};  ///< robot link at or below the tool link: may touch a held object
+            double radius{0.0};   ///< bounding radius of the shape about its centre
         };
+        /** Two bodies that may meet along a motion, and how fast their distance may shrink. */
+        struct SweptPair
+        {
+            const Body *a;
+            const Body *b;
+            double rate;  ///< bound on the distance change over the whole motion
+        };
+
+        std::vector<SweptPair> sweptPairs(const Configuration &from, const Configuration &to) const;
 
         void placeBodies(const Configuration &configuration) const;
         bool hitsObstacle(const Body &body, int allowedObstacle, std::string *contact) const;
@@ -72,6 +113,16 @@ namespace ompl_mm
         static bool isPresent(const Configuration &configuration, int object)
         {
             return !configuration.present || (*configuration.present)[object];
+        }
+        static bool isHeld(const Configuration &configuration, int object)
+        {
+            return (*configuration.restingSurfaces)[object] < 0;
+        }
+        /** True when the object rests on a surface of the obstacle. */
+        bool restsOn(const Configuration &configuration, int object, int obstacle) const
+        {
+            const int surface = (*configuration.restingSurfaces)[object];
+            return surface >= 0 && surfaceObstacle_[surface] == obstacle;
         }
 
         ManipulationModelPtr model_;
@@ -82,5 +133,6 @@ namespace ompl_mm
         std::vector<int> surfaceObstacle_;  ///< per surface, the obstacle it belongs to, or -1
         std::unique_ptr<fcl::BroadPhaseCollisionManagerd> obstacleTree_;
         mutable std::vector<Eigen::Isometry3d> linkFrames_;
+        MotionBounds bounds_;
     };
 }  // namespace ompl_mm

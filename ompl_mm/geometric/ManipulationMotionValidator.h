@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ompl_mm/collision/CollisionWorld.h"
 #include "ompl_mm/primitives/Primitive.h"
 
 #include <ompl/base/MotionValidator.h>
@@ -12,10 +13,13 @@ namespace ompl_mm
 {
     /** OMPL's motion check for manipulation: a motion between two states is valid only when one of
         the primitives explains it (Primitive::explain: nothing moves but the robot; or an object is
-        pushed with the tool at its standoff behind it; later primitives: carried in the grasp) and
-        every state along it is valid at the space's collision resolution. OMPL's own DiscreteMotionValidator
-        checks only the states, so it accepts objects that slide across the room while the robot is
-        elsewhere. ManipulationSetup installs one; with it PathGeometric::check(), PathSimplifier,
+        pushed with the tool at its standoff behind it; later primitives: carried in the grasp), its
+        end state is valid and every configuration along it is collision-free, checked continuously
+        (CollisionWorld::checkSweep), not at sampled states. OMPL's own DiscreteMotionValidator
+        checks only sampled states, so it accepts objects that slide across the room while the robot
+        is elsewhere, and parts of a motion it accepted may graze what its samples missed: OMPL's
+        B-spline smoothing then leaves unchecked colliding states in a path. Here any part of a valid
+        motion is valid. ManipulationSetup installs one; with it PathGeometric::check(), PathSimplifier,
         SimpleSetup::simplifySolution() and Benchmark's "correct solution" all judge manipulation
         paths correctly. It also names a segment's primitive (explain()), which ManipulationPath
         uses to relabel states changed by OMPL's simplifier. */
@@ -34,27 +38,23 @@ namespace ompl_mm
             aside), or nothing. */
         std::optional<SegmentLabel> explain(const ompl::base::State *s1, const ompl::base::State *s2) const;
 
-        /** OMPL's hook: true when a primitive explains the motion and every state along it
-            (including s2, not s1) is valid; the states are checked in halving order, as OMPL's
-            DiscreteMotionValidator does, so that collisions show early. */
+        /** OMPL's hook: true when a primitive explains the motion, s2 is valid and every
+            configuration from s1 to s2 is collision-free. @pre s1 is valid (as for OMPL's
+            validators). */
         bool checkMotion(const ompl::base::State *s1, const ompl::base::State *s2) const override;
-        /** OMPL's hook: as above; when invalid, lastValid holds the last valid state along the
-            motion (s1 when no primitive explains it) and its fraction of the way. */
+        /** OMPL's hook: as above; when invalid, lastValid holds a valid state along the motion
+            that keeps CollisionWorld::SAFE_CLEARANCE (s1 when no primitive explains the motion)
+            and its fraction of the way. */
         bool checkMotion(const ompl::base::State *s1, const ompl::base::State *s2,
                          std::pair<ompl::base::State *, double> &lastValid) const override;
 
-    private:
-        /** The number of check steps of a motion (at least 1) and how many of them, from the
-            first, reach a valid state. */
-        struct StepCheck
-        {
-            unsigned int steps;
-            unsigned int valid;
-        };
-        /** Checks the states at 1/n, 2/n, … 1 of the motion in order, stopping at the first
-            invalid one. */
-        StepCheck checkSteps(const ompl::base::State *s1, const ompl::base::State *s2) const;
+        /** The collision part of checkMotion alone, for motions a primitive made (MOPL's walks):
+            whether every configuration from s1 to s2 is collision-free, and a safe fraction. */
+        CollisionWorld::SweepCheck checkSweep(const ompl::base::State *s1, const ompl::base::State *s2) const;
 
+    private:
         std::vector<PrimitivePtr> primitives_;
+        const ManipulationStateSpace *space_;
+        CollisionWorld world_;
     };
 }  // namespace ompl_mm

@@ -141,6 +141,7 @@ namespace ompl_mm
         const ManipulationStateSpace *space_{nullptr};
         std::unique_ptr<ManipulationMetric> metric_;
         std::unique_ptr<EmptySpacePlanner> esp_;
+        std::unique_ptr<ManipulationMotionValidator> motions_;  ///< checks the walks' motions continuously
         std::unique_ptr<ManipulationSimplifier> simplifier_;
         std::unique_ptr<ModalSampler> sampler_;
         ModalSampler::Probabilities probabilities_;

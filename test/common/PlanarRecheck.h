@@ -8,47 +8,38 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace ompl_mm::test
 {
-    constexpr double PLANAR_RADIUS = 0.2;  // robot and objects are discs of this radius seen from above
-    constexpr double PLANAR_CONNECT_STEP = 0.05;  // the scene's collision-check step along motions
-
-    /** Deepest overlap a straight motion checked every PLANAR_CONNECT_STEP can hide: a disc passing
-        another (radii summing to `reach`) is checked at most half a step from its closest point. */
-    inline double hiddenOverlap(double reach)
-    {
-        return reach - std::sqrt(reach * reach - 0.25 * PLANAR_CONNECT_STEP * PLANAR_CONNECT_STEP);
-    }
+    constexpr double PLANAR_RADIUS = 0.2;      // robot and objects are discs of this radius seen from above
+    constexpr double PLANAR_TOLERANCE = 1e-6;  // FCL's distance precision: motions are checked continuously
 
     /** True when a disc at p overlaps the box footprint of an obstacle (axis-aligned here). */
-    inline bool discHitsBox(const Eigen::Vector2d &p, const Obstacle &box, double allowed)
+    inline bool discHitsBox(const Eigen::Vector2d &p, const Obstacle &box)
     {
         const Eigen::Vector2d centre = box.pose.translation().head<2>();
         const Eigen::Vector2d half = 0.5 * box.shape.boxSize.head<2>();
         const Eigen::Vector2d closest = p.cwiseMax(centre - half).cwiseMin(centre + half);
-        return (closest - p).norm() < PLANAR_RADIUS - allowed;
+        return (closest - p).norm() < PLANAR_RADIUS - PLANAR_TOLERANCE;
     }
 
-    /** Independent validity of a MOBILE BLOCKED configuration in the plane; waypoints must be
-        free (exact = true), states between them may overlap by what the check step can hide. */
+    /** Independent validity of a MOBILE BLOCKED configuration in the plane. */
     inline std::string planarFault(const Eigen::Vector2d &robot, const std::vector<Eigen::Vector2d> &objects,
-                                   const Scene &scene, bool exact)
+                                   const Scene &scene)
     {
-        // passing a box corner is passing a point: the reach is the disc's own radius
-        const double boxAllowed = exact ? 1e-9 : hiddenOverlap(PLANAR_RADIUS);
-        const double discAllowed = exact ? 1e-9 : hiddenOverlap(2 * PLANAR_RADIUS);
         std::vector<Eigen::Vector2d> discs{robot};
         discs.insert(discs.end(), objects.begin(), objects.end());
         for (std::size_t a = 0; a < discs.size(); ++a)
         {
             for (const Obstacle &obstacle : scene.obstacles)
-                if (discHitsBox(discs[a], obstacle, boxAllowed))
+                if (discHitsBox(discs[a], obstacle))
                     return "disc " + std::to_string(a) + " hits " + obstacle.name;
             for (std::size_t b = a + 1; b < discs.size(); ++b)
-                if ((discs[a] - discs[b]).norm() < 2 * PLANAR_RADIUS - discAllowed)
+                if ((discs[a] - discs[b]).norm() < 2 * PLANAR_RADIUS - PLANAR_TOLERANCE)
                     return "discs " + std::to_string(a) + " and " + std::to_string(b) + " overlap";
         }
         return {};
@@ -78,7 +69,8 @@ namespace ompl_mm::test
         for (unsigned int i = 0; i < n; ++i)
             EXPECT_NEAR((objectsAt(first)[i] - scene.objects[i].start.position.head<2>()).norm(), 0.0, 1e-12);
 
-        ompl::base::State *between = space.allocState();
+        const std::unique_ptr<ompl::base::State, std::function<void(ompl::base::State *)>> between(
+            space.allocState(), [&space](ompl::base::State *s) { space.freeState(s); });
         for (std::size_t k = 0; k + 1 < path.getStateCount(); ++k)
         {
             const ompl::base::State *a = path.getState(k);
@@ -104,19 +96,17 @@ namespace ompl_mm::test
                                               ? SegmentLabel{PrimitiveKind::Transit, -1}
                                               : SegmentLabel{PrimitiveKind::Push, static_cast<int>(moved[0])};
             EXPECT_TRUE(path.label(k) == expected) << "label of segment " << k;
-            // waypoints are free in the planar model; states between them, at 1 cm, overlap no more
-            // than the check step can hide
+            // waypoints, and the states between them at 1 cm, are free in the planar model
             const double length = std::max((robotAt(b) - robotAt(a)).norm(), 1e-3);
             const int steps = static_cast<int>(std::ceil(length / 0.01));
             for (int j = 0; j <= steps; ++j)
             {
-                space.interpolate(a, b, static_cast<double>(j) / steps, between);
-                const bool waypoint = j == 0 || j == steps;
-                const std::string fault = planarFault(robotAt(between), objectsAt(between), scene, waypoint);
+                space.interpolate(a, b, static_cast<double>(j) / steps, between.get());
+                const std::string fault =
+                    planarFault(robotAt(between.get()), objectsAt(between.get()), scene);
                 ASSERT_TRUE(fault.empty()) << "segment " << k << " step " << j << ": " << fault;
             }
         }
-        space.freeState(between);
 
         // ends in the goal: robot at the centre, obj3 at (-0.9, -0.9)
         const ompl::base::State *last = path.getState(path.getStateCount() - 1);

@@ -3,6 +3,7 @@
 #include "ompl_core/io/InputError.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace ompl_mm
 {
@@ -14,6 +15,15 @@ namespace ompl_mm
             const fcl::CollisionObjectd *allowed{nullptr};
             const fcl::CollisionObjectd *hit{nullptr};
         };
+
+        /** The distance of two placed bodies; zero or less when they touch. */
+        double distance(const fcl::CollisionObjectd &a, const fcl::CollisionObjectd &b)
+        {
+            fcl::DistanceRequestd request;
+            fcl::DistanceResultd result;
+            fcl::distance(&a, &b, request, result);
+            return result.min_distance;
+        }
 
         bool narrowPhase(const fcl::CollisionObjectd &a, const fcl::CollisionObjectd &b)
         {
@@ -67,7 +77,7 @@ namespace ompl_mm
         throw ompl::Exception("unknown shape kind");
     }
 
-    CollisionWorld::CollisionWorld(ManipulationModelPtr model) : model_(std::move(model))
+    CollisionWorld::CollisionWorld(ManipulationModelPtr model) : model_(std::move(model)), bounds_(model_)
     {
         const Scene &scene = model_->scene();
         const RobotModel &robot = model_->robot();
@@ -76,7 +86,7 @@ namespace ompl_mm
                 robotBodies_.push_back(
                     {std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(s.shape)), s.origin,
                      static_cast<int>(l), "robot link '" + robot.links()[l].name + "'",
-                     robot.isInSubtree(static_cast<int>(l), model_->toolLink())});
+                     robot.isInSubtree(static_cast<int>(l), model_->toolLink()), s.shape.boundingRadius()});
 
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
         {
@@ -84,7 +94,8 @@ namespace ompl_mm
             Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
             offset.translation().z() = 0.5 * shape.height();  // the object frame is at its base
             objectBodies_.push_back({std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(shape)),
-                                     offset, static_cast<int>(i), "object '" + scene.objects[i].name + "'"});
+                                     offset, static_cast<int>(i), "object '" + scene.objects[i].name + "'",
+                                     false, shape.boundingRadius()});
         }
 
         obstacleTree_ = std::make_unique<fcl::DynamicAABBTreeCollisionManagerd>();
@@ -92,8 +103,11 @@ namespace ompl_mm
         {
             Body body{
                 std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(scene.obstacles[i].shape)),
-                Eigen::Isometry3d::Identity(), static_cast<int>(i),
-                "obstacle '" + scene.obstacles[i].name + "'"};
+                Eigen::Isometry3d::Identity(),
+                static_cast<int>(i),
+                "obstacle '" + scene.obstacles[i].name + "'",
+                false,
+                scene.obstacles[i].shape.boundingRadius()};
             place(*body.object, scene.obstacles[i].pose);
             body.object->setUserData(&obstacleBodies_);  // non-null marks tree members
             obstacleTree_->registerObject(body.object.get());
@@ -218,6 +232,102 @@ namespace ompl_mm
         placeBodies(configuration);
         return objectsFree(configuration, contact) &&
                (!configuration.joints || robotFree(configuration, contact));
+    }
+
+    std::vector<CollisionWorld::SweptPair> CollisionWorld::sweptPairs(const Configuration &from,
+                                                                      const Configuration &to) const
+    {
+        std::vector<BodySweep> robotSweeps;
+        for (const Body &link : robotBodies_)
+            robotSweeps.push_back(bounds_.linkSweep(
+                link.owner, link.offset.translation().norm() + link.radius, from.joints, to.joints));
+        std::vector<BodySweep> objectSweeps;
+        for (const Body &object : objectBodies_)
+        {
+            const ObjectPose &a = (*from.objects)[object.owner];
+            const ObjectPose &b = (*to.objects)[object.owner];
+            objectSweeps.push_back(
+                isHeld(from, object.owner) || isHeld(to, object.owner)
+                    ? bounds_.carriedSweep(a, b, object.offset.translation().norm() + object.radius,
+                                           from.joints, to.joints)
+                    : MotionBounds::slideSweep(a, b, object.radius));
+        }
+        const BodySweep still;
+        const auto rate = [](const BodySweep &a, const BodySweep &b)
+        { return (a.translation - b.translation).norm() + a.spread + b.spread; };
+
+        std::vector<SweptPair> pairs;
+        const auto add = [&pairs](const Body &a, const Body &b, double r)
+        {
+            if (r > 0.0)  // bodies that keep their distance keep what both ends' checks found
+                pairs.push_back({&a, &b, r});
+        };
+        for (std::size_t l = 0; l < robotBodies_.size(); ++l)
+        {
+            for (const Body &obstacle : obstacleBodies_)
+                add(robotBodies_[l], obstacle, rate(robotSweeps[l], still));
+            for (const Body &object : objectBodies_)
+                if (!(robotBodies_[l].gripper && (isHeld(from, object.owner) || isHeld(to, object.owner))))
+                    add(robotBodies_[l], object, rate(robotSweeps[l], objectSweeps[object.owner]));
+        }
+        for (const auto &[a, b] : selfPairs_)
+            add(robotBodies_[a], robotBodies_[b], rate(robotSweeps[a], robotSweeps[b]));
+        for (std::size_t i = 0; i < objectBodies_.size(); ++i)
+        {
+            for (const Body &obstacle : obstacleBodies_)
+                if (!restsOn(from, static_cast<int>(i), obstacle.owner) &&
+                    !restsOn(to, static_cast<int>(i), obstacle.owner))
+                    add(objectBodies_[i], obstacle, rate(objectSweeps[i], still));
+            for (std::size_t j = i + 1; j < objectSweeps.size(); ++j)
+                add(objectBodies_[i], objectBodies_[j], rate(objectSweeps[i], objectSweeps[j]));
+        }
+        return pairs;
+    }
+
+    CollisionWorld::SweepCheck CollisionWorld::checkSweep(
+        const Configuration &from, const Configuration &to,
+        const std::function<Configuration(double)> &configurationAt) const
+    {
+        std::vector<SweptPair> pairs = sweptPairs(from, to);
+        double t = 0.0;
+        double safe = 0.0;
+        placeBodies(from);
+        for (unsigned int round = 0; round < MAX_SWEEP_ROUNDS; ++round)
+        {
+            double step = std::numeric_limits<double>::infinity();
+            bool clear = true;
+            for (std::size_t k = 0; k < pairs.size();)
+            {
+                const SweptPair &pair = pairs[k];
+                const double remaining = (1.0 - t) * pair.rate;
+                // bounding boxes first: their gap is a lower bound on the distance; a pair that
+                // cannot come near for the rest of the way is done
+                const double apart = pair.a->object->getAABB().distance(pair.b->object->getAABB());
+                if (apart > remaining + SAFE_CLEARANCE)
+                {
+                    pairs[k] = pairs.back();
+                    pairs.pop_back();
+                    continue;
+                }
+                const double d =
+                    apart > 2.0 * SAFE_CLEARANCE ? apart : distance(*pair.a->object, *pair.b->object);
+                if (d < MIN_CLEARANCE)
+                    return {false, safe};
+                clear = clear && d >= SAFE_CLEARANCE;
+                // stop a safe clearance short of a contact ahead, then close in as far as keeps half
+                // the least clearance (so any part of a motion it accepts passes too)
+                const double keep = d > 2.0 * SAFE_CLEARANCE ? SAFE_CLEARANCE : 0.5 * MIN_CLEARANCE;
+                step = std::min(step, (d - keep) / pair.rate);
+                ++k;
+            }
+            if (clear)
+                safe = t;
+            if (pairs.empty() || t + step >= 1.0)
+                return {true, 1.0};
+            t += step;
+            placeBodies(configurationAt(t));
+        }
+        return {false, safe};
     }
 
     std::string CollisionWorld::contactAmong(const double *joints,

@@ -2,33 +2,46 @@
 
 #include <ompl/util/Exception.h>
 
-#include <algorithm>
-#include <queue>
-
 namespace ompl_mm
 {
     namespace
     {
-        /** The number of check steps: the space's valid segment count rounded up to a power of two,
-            so that the states checked along a motion include those of its halves, quarters, …
-            (subdividing a valid motion, as OMPL's B-spline smoothing does, yields valid motions). */
-        unsigned int dyadicSteps(const ompl::base::StateSpace &space, const ompl::base::State *s1,
-                                 const ompl::base::State *s2)
+        const ManipulationStateSpace *manipulationSpace(const ompl::base::SpaceInformationPtr &si)
         {
-            const unsigned int needed = std::max(1u, space.validSegmentCount(s1, s2));
-            unsigned int steps = 1;
-            while (steps < needed)
-                steps *= 2;
-            return steps;
+            const auto *space = dynamic_cast<const ManipulationStateSpace *>(si->getStateSpace().get());
+            if (!space)
+                throw ompl::Exception("ManipulationMotionValidator needs a ManipulationStateSpace");
+            return space;
         }
+
+        /** A state seen as a collision configuration; it reads the state's joints in place. */
+        struct ConfigurationOf
+        {
+            std::vector<ObjectPose> poses;
+            std::vector<int> resting;
+
+            CollisionWorld::Configuration read(const ManipulationStateSpace &space,
+                                               const ompl::base::State *state)
+            {
+                poses.resize(space.objectCount());
+                resting.resize(space.objectCount());
+                for (unsigned int i = 0; i < space.objectCount(); ++i)
+                {
+                    poses[i] = space.objectPose(state, i);
+                    resting[i] = space.model()->scene().restingSurface(poses[i].position);
+                }
+                return {space.robotValues(state), &poses, &resting};
+            }
+        };
     }  // namespace
 
     ManipulationMotionValidator::ManipulationMotionValidator(const ompl::base::SpaceInformationPtr &si,
                                                              std::vector<PrimitivePtr> primitives)
-        : ompl::base::MotionValidator(si), primitives_(std::move(primitives))
+        : ompl::base::MotionValidator(si),
+          primitives_(std::move(primitives)),
+          space_(manipulationSpace(si)),
+          world_(space_->model())
     {
-        if (!std::dynamic_pointer_cast<ManipulationStateSpace>(si->getStateSpace()))
-            throw ompl::Exception("ManipulationMotionValidator needs a ManipulationStateSpace");
     }
 
     std::optional<SegmentLabel> ManipulationMotionValidator::explain(const ompl::base::State *s1,
@@ -40,20 +53,19 @@ namespace ompl_mm
         return std::nullopt;
     }
 
-    ManipulationMotionValidator::StepCheck ManipulationMotionValidator::checkSteps(
-        const ompl::base::State *s1, const ompl::base::State *s2) const
+    CollisionWorld::SweepCheck ManipulationMotionValidator::checkSweep(const ompl::base::State *s1,
+                                                                       const ompl::base::State *s2) const
     {
-        const ompl::base::StateSpace &space = *si_->getStateSpace();
-        StepCheck check{dyadicSteps(space, s1, s2), 0};
-        ompl::base::State *state = si_->allocState();
-        while (check.valid < check.steps)
-        {
-            space.interpolate(s1, s2, static_cast<double>(check.valid + 1) / check.steps, state);
-            if (!si_->isValid(state))
-                break;
-            ++check.valid;
-        }
-        si_->freeState(state);
+        ConfigurationOf from, to, along;
+        ompl::base::State *state = space_->allocState();
+        const CollisionWorld::SweepCheck check =
+            world_.checkSweep(from.read(*space_, s1), to.read(*space_, s2),
+                              [&](double t)
+                              {
+                                  space_->interpolate(s1, s2, t, state);
+                                  return along.read(*space_, state);
+                              });
+        space_->freeState(state);
         return check;
     }
 
@@ -67,15 +79,21 @@ namespace ompl_mm
     bool ManipulationMotionValidator::checkMotion(const ompl::base::State *s1, const ompl::base::State *s2,
                                                   std::pair<ompl::base::State *, double> &lastValid) const
     {
-        const StepCheck check = explain(s1, s2) ? checkSteps(s1, s2) : StepCheck{1, 0};
-        const bool valid = check.valid == check.steps;
-        if (!valid)
+        CollisionWorld::SweepCheck check{false, 0.0};
+        if (explain(s1, s2))
         {
-            lastValid.second = static_cast<double>(check.valid) / check.steps;
-            if (lastValid.first)
-                si_->getStateSpace()->interpolate(s1, s2, lastValid.second, lastValid.first);
+            check = checkSweep(s1, s2);
+            // the end's other rules (joint limits, support): short of it, stay where the sweep began
+            if (check.free && !si_->isValid(s2))
+                check = {false, 0.0};
         }
-        ++(valid ? valid_ : invalid_);
-        return valid;
+        if (!check.free)
+        {
+            lastValid.second = check.safeFraction;
+            if (lastValid.first)
+                space_->interpolate(s1, s2, lastValid.second, lastValid.first);
+        }
+        ++(check.free ? valid_ : invalid_);
+        return check.free;
     }
 }  // namespace ompl_mm

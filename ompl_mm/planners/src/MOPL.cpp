@@ -1,5 +1,7 @@
 #include "ompl_mm/planners/MOPL.h"
 
+#include "ompl_mm/geometric/ManipulationMotionValidator.h"
+
 #include "ompl_mm/base/ManipulationValidityChecker.h"
 
 #include <ompl/base/PlannerData.h>
@@ -146,6 +148,7 @@ namespace ompl_mm
         if (probabilities_.undefined + probabilities_.startValue > 1.0)
             throw ompl::Exception(getName(), "undefined_probability + start_value_probability exceeds 1");
         esp_ = std::make_unique<EmptySpacePlanner>(space_, primitives_);
+        motions_ = std::make_unique<ManipulationMotionValidator>(si_, primitives_);
         simplifier_ = std::make_unique<ManipulationSimplifier>(si_);
         startTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), true);
         goalTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), false);
@@ -247,50 +250,47 @@ namespace ompl_mm
 
     MOPL::Extension MOPL::walk(ManipulationTree &tree, int near, const Trajectory &trajectory)
     {
-        // walk away from the tree: forward along the trajectory, or backward from its end
+        // walk away from the tree: forward along the trajectory, or backward from its end, a vertex
+        // at least every vertex step and at every waypoint (mode switches happen there)
         const bool forward = tree.forward();
         const std::size_t segments = trajectory.size() - 1;
         Extension extension;
         int parent = near;
-        double sinceVertex = 0.0;
-        ob::State *state = space_->allocState();
-        ob::State *lastValid = space_->allocState();
-        space_->copyState(lastValid, tree.vertex(near).state);
+        ob::State *from = space_->allocState();
+        ob::State *to = space_->allocState();
         bool blocked = false;
         for (std::size_t s = 0; s < segments && !blocked; ++s)
         {
             const std::size_t i = forward ? s : segments - 1 - s;
-            const ob::State *a = trajectory.state(i);
-            const ob::State *b = trajectory.state(i + 1);
+            const ob::State *start = trajectory.state(forward ? i : i + 1);
+            const ob::State *end = trajectory.state(forward ? i + 1 : i);
             const SegmentLabel label = trajectory.label(i);
-            const double length = segmentLength(a, b);
-            const unsigned int steps =
-                std::max(1u, static_cast<unsigned int>(std::ceil(length / connectStep_)));
-            for (unsigned int k = 1; k <= steps; ++k)
+            const unsigned int pieces =
+                std::max(1u, static_cast<unsigned int>(std::ceil(segmentLength(start, end) / vertexStep_)));
+            space_->copyState(from, start);
+            for (unsigned int k = 1; k <= pieces && !blocked; ++k)
             {
-                const double t = static_cast<double>(k) / steps;
-                space_->interpolate(a, b, forward ? t : 1.0 - t, state);
-                if (!si_->isValid(state))
+                if (k == pieces)
+                    space_->copyState(to, end);
+                else
+                    space_->interpolate(start, end, static_cast<double>(k) / pieces, to);
+                const CollisionWorld::SweepCheck check = motions_->checkSweep(from, to);
+                blocked = !check.free || !si_->isValid(to);
+                if (blocked && check.free)
+                    break;  // the piece's end breaks a rule other than collision: stay
+                if (blocked)
                 {
-                    if (sinceVertex > 0.0)
-                        extension.last = parent = tree.add(lastValid, parent, label);
-                    blocked = true;
-                    break;
+                    if (check.safeFraction <= 0.0)
+                        break;
+                    space_->interpolate(from, to, check.safeFraction, to);
                 }
-                space_->copyState(lastValid, state);
-                sinceVertex += length / steps;
-                if (k == steps || sinceVertex >= vertexStep_)
-                {
-                    // waypoints are exact: mode switches happen there
-                    const ob::State *vertexState = k == steps ? (forward ? b : a) : state;
-                    extension.last = parent = tree.add(vertexState, parent, label);
-                    sinceVertex = 0.0;
-                }
+                extension.last = parent = tree.add(to, parent, label);
+                std::swap(from, to);
             }
         }
         extension.reached = !blocked;
-        space_->freeState(state);
-        space_->freeState(lastValid);
+        space_->freeState(from);
+        space_->freeState(to);
         return extension;
     }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace ompl_mm;
 using namespace ompl_mm::test;
@@ -166,4 +167,101 @@ TEST(CollisionWorldSelf, AdjacentLinksMayTouchWhateverTheirOrder)
     std::string contact;
     for (const std::vector<double> &q : {std::vector<double>{0.0, 0.0}, std::vector<double>{1.0, -2.0}})
         EXPECT_TRUE(world.isCollisionFree({q.data(), &objects, &resting}, &contact)) << contact;
+}
+
+namespace
+{
+    /** Motions of MOBILE BLOCKED's robot, and optionally one object with it, for checkSweep. */
+    class MobileSweep : public MobileWorld
+    {
+    protected:
+        using V2 = Eigen::Vector2d;
+
+        /** Checks the robot's motion from a to b, moving object `pushed` (if >= 0) by the same. */
+        CollisionWorld::SweepCheck sweep(const V2 &a, const V2 &b, int pushed = -1)
+        {
+            std::vector<double> qa{a.x(), a.y()}, qb{b.x(), b.y()};
+            std::vector<ObjectPose> posesA = poses_, posesB = poses_;
+            if (pushed >= 0)
+                posesB[pushed].position.head<2>() += b - a;
+            along_ = poses_;
+            return world_.checkSweep(
+                {qa.data(), &posesA, &resting_}, {qb.data(), &posesB, &resting_},
+                [&](double t)
+                {
+                    const V2 at = a + t * (b - a);
+                    joints_ = {at.x(), at.y()};
+                    if (pushed >= 0)
+                        along_[pushed].position =
+                            posesA[pushed].position + t * (posesB[pushed].position - posesA[pushed].position);
+                    return CollisionWorld::Configuration{joints_.data(), &along_, &resting_};
+                });
+        }
+
+        /** Whether the robot alone is free at p. */
+        bool freeAt(const V2 &p)
+        {
+            joints_ = {p.x(), p.y()};
+            return free();
+        }
+
+        std::vector<ObjectPose> along_;
+        // block2's corner nearest the room's centre, and the way from it that the robot passes by
+        const V2 corner_{0.5, -0.5};
+        const V2 away_ = V2(1.0, 1.0).normalized();
+        const V2 along_line_ = V2(1.0, -1.0).normalized();
+    };
+}  // namespace
+
+TEST_F(MobileSweep, APassThatGrazesACornerBetweenItsEndsCollides)
+{
+    poses_[1].position = Eigen::Vector3d(0.8, 1.0, 0.0);  // obj2 out of the way
+    // 1 mm too close at the middle, free at both ends 5 cm apart (a check every 5 cm misses it)
+    const V2 closest = corner_ + 0.199 * away_;
+    const V2 a = closest - 0.025 * along_line_, b = closest + 0.025 * along_line_;
+    ASSERT_TRUE(freeAt(a));
+    ASSERT_TRUE(freeAt(b));
+    ASSERT_FALSE(freeAt(closest));
+    EXPECT_FALSE(sweep(a, b).free);
+    EXPECT_FALSE(sweep(b, a).free);
+}
+
+TEST_F(MobileSweep, EveryPartOfAFreeMotionIsFree)
+{
+    poses_[1].position = Eigen::Vector3d(0.8, 1.0, 0.0);  // obj2 out of the way
+    // passing the corner 1 mm clear: free, and so is any part of it, however it is cut
+    const V2 closest = corner_ + 0.201 * away_;
+    const V2 a = closest - 0.5 * along_line_, b = closest + 0.5 * along_line_;
+    ASSERT_TRUE(sweep(a, b).free);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int k = 0; k < 200; ++k)
+    {
+        double s = unit(rng), t = unit(rng);
+        if (s > t)
+            std::swap(s, t);
+        EXPECT_TRUE(sweep(a + s * (b - a), a + t * (b - a)).free) << s << " .. " << t;
+    }
+    // and 0.5 mm into the corner it is not
+    const V2 inside = corner_ + 0.1995 * away_;
+    EXPECT_FALSE(sweep(inside - 0.5 * along_line_, inside + 0.5 * along_line_).free);
+}
+
+TEST_F(MobileSweep, AMotionIntoAWallStopsSafelyShortOfIt)
+{
+    // straight down onto block2's top face (y = -0.5)
+    const CollisionWorld::SweepCheck check = sweep(V2(0.0, 0.5), V2(0.0, -1.0));
+    EXPECT_FALSE(check.free);
+    const double y = 0.5 + check.safeFraction * (-1.5);
+    EXPECT_GE(y, -0.5 + 0.2 + CollisionWorld::SAFE_CLEARANCE - 1e-9);
+    EXPECT_LT(y, -0.5 + 0.2 + 0.05);  // and not far from it
+}
+
+TEST_F(MobileSweep, APushKeepsTheRobotJustBehindTheObject)
+{
+    // the robot 1 cm behind obj2 (radii 0.2 + 0.2), both moving 0.2 m along +x
+    const V2 behind(0.8 - 0.41, -0.1);
+    EXPECT_TRUE(sweep(behind, behind + V2(0.2, 0.0), 1).free);
+    // without the object moving, the robot runs into it
+    EXPECT_FALSE(sweep(behind, behind + V2(0.2, 0.0)).free);
 }

@@ -1,0 +1,117 @@
+// Tests for MotionBounds: the bounds hold for points of every link along random linear joint
+// motions, and a mobile base translates its body exactly.
+#include "ompl_mm/collision/MotionBounds.h"
+
+#include "common/MobileBlocked.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace ompl_mm;
+using namespace ompl_mm::test;
+
+namespace
+{
+    /** A mobile base (x, y prismatic) carrying an arm: a shoulder about z, a prismatic lift under
+        it, an elbow about y, and a hand. */
+    const char *const MOBILE_ARM = R"(<?xml version="1.0"?>
+<robot name="mobile_arm">
+  <link name="world"/>
+  <joint name="x" type="prismatic"><parent link="world"/><child link="sled"/>
+    <axis xyz="1 0 0"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+  <link name="sled"/>
+  <joint name="y" type="prismatic"><parent link="sled"/><child link="base"/>
+    <axis xyz="0 1 0"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+  <link name="base"><collision><geometry><cylinder radius="0.3" length="0.4"/></geometry></collision></link>
+  <joint name="shoulder" type="revolute"><parent link="base"/><child link="column"/>
+    <origin xyz="0.1 0 0.3"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
+  <link name="column"/>
+  <joint name="lift" type="prismatic"><parent link="column"/><child link="upper"/>
+    <origin xyz="0 0 0.2"/><axis xyz="0 0 1"/><limit lower="0" upper="0.5" effort="1" velocity="1"/></joint>
+  <link name="upper"><collision><origin xyz="0.2 0 0"/><geometry><box size="0.4 0.05 0.05"/></geometry></collision></link>
+  <joint name="elbow" type="revolute"><parent link="upper"/><child link="fore"/>
+    <origin xyz="0.4 0 0"/><axis xyz="0 1 0"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+  <link name="fore"><collision><origin xyz="0.15 0 0"/><geometry><sphere radius="0.05"/></geometry></collision></link>
+  <joint name="wrist" type="fixed"><parent link="fore"/><child link="hand"/><origin xyz="0.3 0 0"/></joint>
+  <link name="hand"/>
+</robot>)";
+
+    ManipulationModelPtr mobileArm()
+    {
+        Scene scene;
+        scene.robot.toolLink = "hand";
+        return std::make_shared<ManipulationModel>(scene,
+                                                   RobotModel::fromUrdfString(MOBILE_ARM, "mobile_arm"));
+    }
+}  // namespace
+
+TEST(MotionBounds, EveryPointOfEveryLinkMovesWithinItsSweep)
+{
+    const ManipulationModelPtr model = mobileArm();
+    const RobotModel &robot = model->robot();
+    const MotionBounds bounds(model);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto randomJoints = [&]
+    {
+        std::vector<double> q;
+        for (unsigned int i = 0; i < robot.dof(); ++i)
+            q.push_back(robot.variableJoint(i).lower +
+                        unit(rng) * (robot.variableJoint(i).upper - robot.variableJoint(i).lower));
+        return q;
+    };
+    const double reach = 0.3;
+    double tightest = 0.0;  // largest share of the bound a point used: the bound is not loose by far
+    for (int trial = 0; trial < 300; ++trial)
+    {
+        const std::vector<double> q1 = randomJoints(), q2 = randomJoints();
+        double t1 = unit(rng), t2 = unit(rng);
+        if (t1 > t2)
+            std::swap(t1, t2);
+        std::vector<double> a(q1.size()), b(q1.size());
+        for (std::size_t j = 0; j < q1.size(); ++j)
+        {
+            a[j] = q1[j] + t1 * (q2[j] - q1[j]);
+            b[j] = q1[j] + t2 * (q2[j] - q1[j]);
+        }
+        std::vector<Eigen::Isometry3d> framesA, framesB;
+        robot.forwardKinematics(a.data(), Eigen::Isometry3d::Identity(), framesA);
+        robot.forwardKinematics(b.data(), Eigen::Isometry3d::Identity(), framesB);
+        for (std::size_t l = 0; l < robot.links().size(); ++l)
+        {
+            const BodySweep sweep = bounds.linkSweep(static_cast<int>(l), reach, q1.data(), q2.data());
+            const Eigen::Vector3d point =
+                reach * Eigen::Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5).normalized();
+            const Eigen::Vector3d moved =
+                framesB[l] * point - framesA[l] * point - (t2 - t1) * sweep.translation;
+            ASSERT_LE(moved.norm(), (t2 - t1) * sweep.spread + 1e-12) << "link " << robot.links()[l].name;
+            if (sweep.spread > 0.0)
+                tightest = std::max(tightest, moved.norm() / ((t2 - t1) * sweep.spread));
+        }
+    }
+    EXPECT_GT(tightest, 0.3);
+}
+
+TEST(MotionBounds, AMobileBaseTranslatesExactly)
+{
+    const ManipulationModelPtr model = mobileArm();
+    const MotionBounds bounds(model);
+    const std::vector<double> q1{0.5, -1.0, 0.3, 0.1, 0.2}, q2{-0.5, 1.0, 0.3, 0.1, 0.2};
+    const int base = model->robot().linkIndex("base");
+    const BodySweep sweep = bounds.linkSweep(base, 0.3, q1.data(), q2.data());
+    EXPECT_TRUE(sweep.translation.isApprox(Eigen::Vector3d(-1.0, 2.0, 0.0)));
+    EXPECT_EQ(sweep.spread, 0.0);
+    // the arm on it turns nothing here either: only the base moved
+    const BodySweep fore = bounds.linkSweep(model->robot().linkIndex("fore"), 0.3, q1.data(), q2.data());
+    EXPECT_TRUE(fore.translation.isApprox(sweep.translation));
+    EXPECT_EQ(fore.spread, 0.0);
+}
+
+TEST(MotionBounds, ASlidingObjectTurnsTheShortWay)
+{
+    const BodySweep sweep =
+        MotionBounds::slideSweep({Eigen::Vector3d(0, 0, 0), 3.0}, {Eigen::Vector3d(1, 0, 0), -3.0}, 0.5);
+    EXPECT_TRUE(sweep.translation.isApprox(Eigen::Vector3d(1, 0, 0)));
+    EXPECT_NEAR(sweep.spread, (2.0 * M_PI - 6.0) * 0.5, 1e-12);
+}
