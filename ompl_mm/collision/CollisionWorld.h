@@ -104,7 +104,8 @@ namespace ompl_mm
             double rate;  ///< bound on the distance change over the whole motion
         };
 
-        std::vector<SweptPair> sweptPairs(const Configuration &from, const Configuration &to) const;
+        /** Fills sweptPairs_ with the pairs a motion may bring together. */
+        void findSweptPairs(const Configuration &from, const Configuration &to) const;
 
         void placeBodies(const Configuration &configuration) const;
         bool hitsObstacle(const Body &body, int allowedObstacle, std::string *contact) const;
@@ -134,5 +135,9 @@ namespace ompl_mm
         std::unique_ptr<fcl::BroadPhaseCollisionManagerd> obstacleTree_;
         mutable std::vector<Eigen::Isometry3d> linkFrames_;
         MotionBounds bounds_;
+        // buffers of checkSweep, kept to spare allocations in planners' inner loops
+        mutable std::vector<BodySweep> robotSweeps_;
+        mutable std::vector<BodySweep> objectSweeps_;
+        mutable std::vector<SweptPair> sweptPairs_;
     };
 }  // namespace ompl_mm

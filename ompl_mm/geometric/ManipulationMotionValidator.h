@@ -30,6 +30,10 @@ namespace ompl_mm
             are the motions it accepts. @pre si outlives the validator (as for OMPL's validators). */
         ManipulationMotionValidator(const ompl::base::SpaceInformationPtr &si,
                                     std::vector<PrimitivePtr> primitives);
+        ~ManipulationMotionValidator() override;
+        ManipulationMotionValidator(const ManipulationMotionValidator &) = delete;  ///< owns a state
+        ManipulationMotionValidator &operator=(const ManipulationMotionValidator &) =
+            delete;  ///< owns a state
 
         /** The primitives it asks. */
         const std::vector<PrimitivePtr> &primitives() const { return primitives_; }
@@ -53,8 +57,21 @@ namespace ompl_mm
         CollisionWorld::SweepCheck checkSweep(const ompl::base::State *s1, const ompl::base::State *s2) const;
 
     private:
+        /** A state seen as a collision configuration: its object poses and resting surfaces (the
+    joints are read in place). */
+        struct ConfigurationOf
+        {
+            std::vector<ObjectPose> poses;
+            std::vector<int> resting;
+            CollisionWorld::Configuration read(const ManipulationStateSpace &space,
+                                               const ompl::base::State *state);
+        };
+
         std::vector<PrimitivePtr> primitives_;
         const ManipulationStateSpace *space_;
         CollisionWorld world_;
+        // buffers of checkSweep, kept to spare allocations in planners' inner loops
+        mutable ConfigurationOf from_, to_, alongConfiguration_;
+        ompl::base::State *along_;
     };
 }  // namespace ompl_mm

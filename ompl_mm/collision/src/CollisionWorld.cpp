@@ -234,14 +234,15 @@ namespace ompl_mm
                (!configuration.joints || robotFree(configuration, contact));
     }
 
-    std::vector<CollisionWorld::SweptPair> CollisionWorld::sweptPairs(const Configuration &from,
-                                                                      const Configuration &to) const
+    void CollisionWorld::findSweptPairs(const Configuration &from, const Configuration &to) const
     {
-        std::vector<BodySweep> robotSweeps;
+        std::vector<BodySweep> &robotSweeps = robotSweeps_;
+        robotSweeps.clear();
         for (const Body &link : robotBodies_)
             robotSweeps.push_back(bounds_.linkSweep(
                 link.owner, link.offset.translation().norm() + link.radius, from.joints, to.joints));
-        std::vector<BodySweep> objectSweeps;
+        std::vector<BodySweep> &objectSweeps = objectSweeps_;
+        objectSweeps.clear();
         for (const Body &object : objectBodies_)
         {
             const ObjectPose &a = (*from.objects)[object.owner];
@@ -256,7 +257,8 @@ namespace ompl_mm
         const auto rate = [](const BodySweep &a, const BodySweep &b)
         { return (a.translation - b.translation).norm() + a.spread + b.spread; };
 
-        std::vector<SweptPair> pairs;
+        std::vector<SweptPair> &pairs = sweptPairs_;
+        pairs.clear();
         const auto add = [&pairs](const Body &a, const Body &b, double r)
         {
             if (r > 0.0)  // bodies that keep their distance keep what both ends' checks found
@@ -281,14 +283,14 @@ namespace ompl_mm
             for (std::size_t j = i + 1; j < objectSweeps.size(); ++j)
                 add(objectBodies_[i], objectBodies_[j], rate(objectSweeps[i], objectSweeps[j]));
         }
-        return pairs;
     }
 
     CollisionWorld::SweepCheck CollisionWorld::checkSweep(
         const Configuration &from, const Configuration &to,
         const std::function<Configuration(double)> &configurationAt) const
     {
-        std::vector<SweptPair> pairs = sweptPairs(from, to);
+        findSweptPairs(from, to);
+        std::vector<SweptPair> &pairs = sweptPairs_;
         double t = 0.0;
         double safe = 0.0;
         placeBodies(from);

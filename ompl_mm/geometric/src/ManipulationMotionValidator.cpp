@@ -14,25 +14,6 @@ namespace ompl_mm
             return space;
         }
 
-        /** A state seen as a collision configuration; it reads the state's joints in place. */
-        struct ConfigurationOf
-        {
-            std::vector<ObjectPose> poses;
-            std::vector<int> resting;
-
-            CollisionWorld::Configuration read(const ManipulationStateSpace &space,
-                                               const ompl::base::State *state)
-            {
-                poses.resize(space.objectCount());
-                resting.resize(space.objectCount());
-                for (unsigned int i = 0; i < space.objectCount(); ++i)
-                {
-                    poses[i] = space.objectPose(state, i);
-                    resting[i] = space.model()->scene().restingSurface(poses[i].position);
-                }
-                return {space.robotValues(state), &poses, &resting};
-            }
-        };
     }  // namespace
 
     ManipulationMotionValidator::ManipulationMotionValidator(const ompl::base::SpaceInformationPtr &si,
@@ -40,8 +21,27 @@ namespace ompl_mm
         : ompl::base::MotionValidator(si),
           primitives_(std::move(primitives)),
           space_(manipulationSpace(si)),
-          world_(space_->model())
+          world_(space_->model()),
+          along_(space_->allocState())
     {
+    }
+
+    ManipulationMotionValidator::~ManipulationMotionValidator()
+    {
+        space_->freeState(along_);
+    }
+
+    CollisionWorld::Configuration ManipulationMotionValidator::ConfigurationOf::read(
+        const ManipulationStateSpace &space, const ompl::base::State *state)
+    {
+        poses.resize(space.objectCount());
+        resting.resize(space.objectCount());
+        for (unsigned int i = 0; i < space.objectCount(); ++i)
+        {
+            poses[i] = space.objectPose(state, i);
+            resting[i] = space.model()->scene().restingSurface(poses[i].position);
+        }
+        return {space.robotValues(state), &poses, &resting};
     }
 
     std::optional<SegmentLabel> ManipulationMotionValidator::explain(const ompl::base::State *s1,
@@ -56,17 +56,12 @@ namespace ompl_mm
     CollisionWorld::SweepCheck ManipulationMotionValidator::checkSweep(const ompl::base::State *s1,
                                                                        const ompl::base::State *s2) const
     {
-        ConfigurationOf from, to, along;
-        ompl::base::State *state = space_->allocState();
-        const CollisionWorld::SweepCheck check =
-            world_.checkSweep(from.read(*space_, s1), to.read(*space_, s2),
-                              [&](double t)
-                              {
-                                  space_->interpolate(s1, s2, t, state);
-                                  return along.read(*space_, state);
-                              });
-        space_->freeState(state);
-        return check;
+        return world_.checkSweep(from_.read(*space_, s1), to_.read(*space_, s2),
+                                 [&](double t)
+                                 {
+                                     space_->interpolate(s1, s2, t, along_);
+                                     return alongConfiguration_.read(*space_, along_);
+                                 });
     }
 
     bool ManipulationMotionValidator::checkMotion(const ompl::base::State *s1,

@@ -280,9 +280,10 @@ namespace ompl_mm
                     break;  // the piece's end breaks a rule other than collision: stay
                 if (blocked)
                 {
-                    if (check.safeFraction <= 0.0)
-                        break;
+                    // keep the way to a contact only when it is worth a vertex: a connect step
                     space_->interpolate(from, to, check.safeFraction, to);
+                    if (segmentLength(from, to) < connectStep_)
+                        break;
                 }
                 extension.last = parent = tree.add(to, parent, label);
                 std::swap(from, to);
