@@ -60,6 +60,8 @@ namespace ompl_mm
         /** Least distance between bodies that move relative to each other along a motion, metres;
             about FCL's distance precision. */
         static constexpr double MIN_CLEARANCE = 1e-5;
+        /** Error allowed for FCL's distances, metres. */
+        static constexpr double DISTANCE_ERROR = 0.25 * MIN_CLEARANCE;
         /** Clearance a motion keeps at the fraction it reports as safe (SweepCheck), metres: a
             planner that stops there can leave again without grazing. */
         static constexpr double SAFE_CLEARANCE = 1e-3;
@@ -101,7 +103,11 @@ namespace ompl_mm
         {
             const Body *a;
             const Body *b;
-            double rate;  ///< bound on the distance change over the whole motion
+            double rate;                ///< bound on the distance change over the whole motion
+            bool translates;            ///< both only translate (their sweeps have no spread)
+            double lastFraction{-1.0};  ///< where the pair's distance was last measured, or -1
+            double lastDistance{0.0};   ///< that distance
+            bool lastExact{false};      ///< of the shapes (true) or of their bounding boxes
         };
 
         /** Fills sweptPairs_ with the pairs a motion may bring together. */

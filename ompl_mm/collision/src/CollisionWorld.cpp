@@ -254,34 +254,32 @@ namespace ompl_mm
                     : MotionBounds::slideSweep(a, b, object.radius));
         }
         const BodySweep still;
-        const auto rate = [](const BodySweep &a, const BodySweep &b)
-        { return (a.translation - b.translation).norm() + a.spread + b.spread; };
-
         std::vector<SweptPair> &pairs = sweptPairs_;
         pairs.clear();
-        const auto add = [&pairs](const Body &a, const Body &b, double r)
+        const auto add = [&pairs](const Body &a, const Body &b, const BodySweep &sa, const BodySweep &sb)
         {
-            if (r > 0.0)  // bodies that keep their distance keep what both ends' checks found
-                pairs.push_back({&a, &b, r});
+            const double rate = (sa.translation - sb.translation).norm() + sa.spread + sb.spread;
+            if (rate > 0.0)  // bodies that keep their distance keep what both ends' checks found
+                pairs.push_back({&a, &b, rate, sa.spread == 0.0 && sb.spread == 0.0});
         };
         for (std::size_t l = 0; l < robotBodies_.size(); ++l)
         {
             for (const Body &obstacle : obstacleBodies_)
-                add(robotBodies_[l], obstacle, rate(robotSweeps[l], still));
+                add(robotBodies_[l], obstacle, robotSweeps[l], still);
             for (const Body &object : objectBodies_)
                 if (!(robotBodies_[l].gripper && (isHeld(from, object.owner) || isHeld(to, object.owner))))
-                    add(robotBodies_[l], object, rate(robotSweeps[l], objectSweeps[object.owner]));
+                    add(robotBodies_[l], object, robotSweeps[l], objectSweeps[object.owner]);
         }
         for (const auto &[a, b] : selfPairs_)
-            add(robotBodies_[a], robotBodies_[b], rate(robotSweeps[a], robotSweeps[b]));
+            add(robotBodies_[a], robotBodies_[b], robotSweeps[a], robotSweeps[b]);
         for (std::size_t i = 0; i < objectBodies_.size(); ++i)
         {
             for (const Body &obstacle : obstacleBodies_)
                 if (!restsOn(from, static_cast<int>(i), obstacle.owner) &&
                     !restsOn(to, static_cast<int>(i), obstacle.owner))
-                    add(objectBodies_[i], obstacle, rate(objectSweeps[i], still));
+                    add(objectBodies_[i], obstacle, objectSweeps[i], still);
             for (std::size_t j = i + 1; j < objectSweeps.size(); ++j)
-                add(objectBodies_[i], objectBodies_[j], rate(objectSweeps[i], objectSweeps[j]));
+                add(objectBodies_[i], objectBodies_[j], objectSweeps[i], objectSweeps[j]);
         }
     }
 
@@ -300,7 +298,7 @@ namespace ompl_mm
             bool clear = true;
             for (std::size_t k = 0; k < pairs.size();)
             {
-                const SweptPair &pair = pairs[k];
+                SweptPair &pair = pairs[k];
                 const double remaining = (1.0 - t) * pair.rate;
                 // bounding boxes first: their gap is a lower bound on the distance; a pair that
                 // cannot come near for the rest of the way is done
@@ -311,15 +309,31 @@ namespace ompl_mm
                     pairs.pop_back();
                     continue;
                 }
-                const double d =
-                    apart > 2.0 * SAFE_CLEARANCE ? apart : distance(*pair.a->object, *pair.b->object);
+                const bool exact = apart <= 2.0 * SAFE_CLEARANCE;
+                const double d = exact ? distance(*pair.a->object, *pair.b->object) : apart;
                 if (d < MIN_CLEARANCE)
                     return {false, safe};
                 clear = clear && d >= SAFE_CLEARANCE;
                 // stop a safe clearance short of a contact ahead, then close in as far as keeps half
                 // the least clearance (so any part of a motion it accepts passes too)
                 const double keep = d > 2.0 * SAFE_CLEARANCE ? SAFE_CLEARANCE : 0.5 * MIN_CLEARANCE;
-                step = std::min(step, (d - keep) / pair.rate);
+                // convex bodies in relative translation: the distance (of the shapes, or of their
+                // boxes) is convex along the motion, so the line through its last two measures,
+                // allowing for their error, bounds it from below from here on
+                double closing = pair.rate;
+                if (pair.translates && pair.lastFraction >= 0.0 && pair.lastExact == exact)
+                    closing = std::min(
+                        closing, (pair.lastDistance - d + 2.0 * DISTANCE_ERROR) / (t - pair.lastFraction));
+                if (closing <= 0.0)
+                {
+                    pairs[k] = pairs.back();  // only moving apart from here
+                    pairs.pop_back();
+                    continue;
+                }
+                step = std::min(step, (d - DISTANCE_ERROR - keep) / closing);
+                pair.lastFraction = t;
+                pair.lastDistance = d;
+                pair.lastExact = exact;
                 ++k;
             }
             if (clear)
