@@ -66,13 +66,14 @@ namespace ompl_mm
         /** World position of the tool point, metres. */
         Eigen::Vector3d toolPosition(const ompl::base::State *state) const;
         /** Length of the path the tool point travels as `from` interpolates to `to`, metres
-            (straight lines between states sampled at the collision resolution). */
+            (straight lines between states sampled at the segment resolution). */
         double toolTravel(const ompl::base::State *from, const ompl::base::State *to) const;
 
-        /** Sets every subspace's resolution so that motion checks step at most `step` in each
+        /** Sets every subspace's longest valid segment so that OMPL's discretisations (path
+            interpolation, validSegmentCount) and toolTravel() step at most `step` in each
             (metres for positions and prismatic joints, radians for revolute joints and yaw), and
             sets the space up again so that the new resolution is in force at once. */
-        void setCollisionResolution(double step);
+        void setSegmentResolution(double step);
 
         /** OMPL's hook: the state a fraction t of the way from `from` to `to`. Objects carried at
             either end move with the tool (their grasp interpolated between the ends' grasps), the

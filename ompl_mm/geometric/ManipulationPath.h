@@ -52,7 +52,7 @@ namespace ompl_mm
         void removeRepeatedStates();
 
         /** Length of the path the tool point travels, metres (straight lines between waypoints
-            sampled at the space's collision resolution). @pre the path has states. */
+            sampled at the space's segment resolution). @pre the path has states. */
         double toolPathLength() const;
         /** Length of the path the tool point travels from state first to state last, metres. */
         double toolPathLength(std::size_t first, std::size_t last) const;

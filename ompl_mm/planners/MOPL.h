@@ -52,7 +52,7 @@ namespace ompl_mm
     class MOPL : public ompl::base::Planner
     {
     public:
-        /** A planner on si with the given primitives (shared); sets the state space's collision
+        /** A planner on si with the given primitives (shared); sets the state space's segment
             resolution to the default connect step.
             @throws ompl::Exception when si's state space is not a ManipulationStateSpace. */
         MOPL(const ompl::base::SpaceInformationPtr &si, std::vector<PrimitivePtr> primitives = {});
@@ -68,11 +68,12 @@ namespace ompl_mm
             reproducible (ompl::RNG::setSeed seeds only generators made afterwards). */
         void setSeed(std::uint_fast32_t seed) { rng_.setLocalSeed(seed); }
 
-        /** Collision-check step along propagated motions (metres or radians); 0.05 by default.
-            Also sets the state space's collision resolution (OMPL's motion checks) to the same step.
+        /** The shortest stretch a walk blocked short of a contact keeps as a new vertex (metres or
+            radians); 0.05 by default. Motions are checked continuously whatever it is. Also sets
+            the state space's segment resolution (ManipulationStateSpace::setSegmentResolution).
             @throws ompl::Exception when step is not positive and finite. */
         void setConnectStep(double step);
-        /** Collision-check step along propagated motions (metres or radians). */
+        /** The shortest stretch a blocked walk keeps (metres or radians). */
         double getConnectStep() const { return connectStep_; }
         /** A tree vertex is added every this much motion along an extension (metres or radians:
             the larger of the joint-space distance and any object's displacement); 0.35 by default.

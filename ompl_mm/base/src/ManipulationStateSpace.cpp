@@ -189,7 +189,7 @@ namespace ompl_mm
         return length;
     }
 
-    void ManipulationStateSpace::setCollisionResolution(double step)
+    void ManipulationStateSpace::setSegmentResolution(double step)
     {
         for (unsigned int i = 0; i < getSubspaceCount(); ++i)
         {

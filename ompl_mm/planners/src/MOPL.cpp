@@ -122,8 +122,8 @@ namespace ompl_mm
     {
         if (!(step > 0.0) || !std::isfinite(step))
             throw ompl::Exception("MOPL", "connect_step must be positive, got " + std::to_string(step));
-        // OMPL's motion checks (PathGeometric::check, the simplifier) step as finely as MOPL's walks
-        std::static_pointer_cast<ManipulationStateSpace>(si_->getStateSpace())->setCollisionResolution(step);
+        // OMPL's discretisations and the tool path's measure step as finely
+        std::static_pointer_cast<ManipulationStateSpace>(si_->getStateSpace())->setSegmentResolution(step);
         connectStep_ = step;
     }
 

@@ -242,7 +242,7 @@ TEST_F(MobileSpace, CollisionResolutionSetsSegmentCount)
     setRobot(space_, to, 1.9 - 1.2, 1.9 - 0.5);  // displacement 1.3
     for (double step : {0.05, 0.1, 0.3})
     {
-        space_.setCollisionResolution(step);
+        space_.setSegmentResolution(step);
         space_.setup();
         const double expected = std::ceil(1.3 / step);
         const double count = space_.validSegmentCount(start_, to);

@@ -77,7 +77,7 @@ TEST(ManipulationSetup, PlannerParametersAreApplied)
     EXPECT_DOUBLE_EQ(setup.mopl()->metricWeights().moveToObjectPenalty, 0.1);
     EXPECT_DOUBLE_EQ(setup.mopl()->metricWeights().moveToObjectFactor, 1.0);
 
-    // the connect step is the collision resolution: 20 steps for a 1 m robot motion
+    // the connect step is the segment resolution: 20 steps for a 1 m robot motion
     setup.setup();
     EXPECT_NEAR(segmentsOfAMetreLongMotion(setup), 1.0 / 0.05, 1.0);
 }
