@@ -64,7 +64,7 @@ namespace ompl_mm
         static constexpr double DISTANCE_ERROR = 0.25 * MIN_CLEARANCE;
         /** Clearance a motion keeps at the fraction it reports as safe (SweepCheck), metres: a
             planner that stops there can leave again without grazing. */
-        static constexpr double SAFE_CLEARANCE = 1e-3;
+        static constexpr double SAFE_CLEARANCE = 1e-2;
         /** Most distance rounds of one motion check; a motion that grazes a body so closely that it
             needs more is rejected. */
         static constexpr unsigned int MAX_SWEEP_ROUNDS = 4000;
