@@ -14,6 +14,10 @@ namespace ompl_core
         apos), for attribute values and element text. */
     std::string xmlEscaped(const std::string &text);
 
+    /** A double as text that converts back to the same double (17 significant digits, "C"
+    locale): for planner parameters and properties, where OMPL's toString keeps 6. */
+    std::string exactText(double value);
+
     /** The names joined by ", " for messages ("known: a, b"), or whenEmpty when there are none. */
     std::string joinedNames(const std::vector<std::string> &names, const std::string &whenEmpty = "none");
 }  // namespace ompl_core

@@ -3,11 +3,20 @@
 #include <algorithm>
 #include <iomanip>
 #include <iterator>
+#include <locale>
 #include <sstream>
 #include <utility>
 
 namespace ompl_core
 {
+    std::string exactText(double value)
+    {
+        std::ostringstream out;
+        out.imbue(std::locale::classic());
+        out << std::setprecision(17) << value;
+        return out.str();
+    }
+
     std::string jsonQuoted(const std::string &text)
     {
         std::ostringstream out;

@@ -1,5 +1,7 @@
 #include "ompl_mm/planners/MOPL.h"
 
+#include "ompl_core/io/TextFormat.h"
+
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 
 #include "ompl_mm/base/ManipulationValidityChecker.h"
@@ -473,7 +475,8 @@ namespace ompl_mm
         // a path that something changed into motions no primitive makes has no counts to give
         if (solution && solution->checkLabels().empty())
         {
-            data.properties["solution tool path length REAL"] = ompl::toString(solution->toolPathLength());
+            data.properties["solution tool path length REAL"] =
+                ompl_core::exactText(solution->toolPathLength());
             for (const auto &[kind, count] : solution->primitiveCounts())
                 data.properties["solution " + kind + " count INTEGER"] = std::to_string(count);
         }

@@ -1,5 +1,7 @@
 #include "ompl_phys/control/PhysicsSetup.h"
 
+#include "ompl_core/io/TextFormat.h"
+
 #include "ompl_core/io/InputError.h"
 #include "ompl_core/run/ParameterSetting.h"
 #include "ompl_phys/base/PhysicsGoal.h"
@@ -39,14 +41,6 @@ namespace ompl_phys
             return controls;
         }
 
-        /** A double as text that converts back to the same double. */
-        std::string exactText(double value)
-        {
-            std::ostringstream out;
-            out.imbue(std::locale::classic());
-            out << std::setprecision(17) << value;
-            return out.str();
-        }
     }  // namespace
 
     PhysicsSetup::PhysicsSetup(const PhysicsScene &scene)
@@ -161,7 +155,8 @@ namespace ompl_phys
         ompl::base::PlannerPtr planner = plannerRegistry().make(name, *this);
         const PlanningLimits &limits = world_->scene().limits;
         if (planner->params().hasParam("goal_bias"))
-            ompl_core::applyParameters(*planner, {{"goal_bias", exactText(limits.goalBias), limits.where}});
+            ompl_core::applyParameters(*planner,
+                                       {{"goal_bias", ompl_core::exactText(limits.goalBias), limits.where}});
         setPlanner(planner);
     }
 

@@ -38,6 +38,22 @@ TEST(OmplTools, BenchmarkWithItsDefaultRequestGivesCorrectSimplifiedPaths)
             EXPECT_EQ(run.at("simplified correct solution BOOLEAN"), "1");
             EXPECT_EQ(run.at("simplified solution segments INTEGER"),
                       std::to_string(path.getStateCount() - 1));
+            // MOPL's properties describe the logged path: the tool (the disc's centre) travels
+            // straight between waypoints, and each segment is a push or a transit
+            // (a primitive is a run of segments with one label)
+            double toolLength = 0.0;
+            unsigned int pushes = 0;
+            const ManipulationStateSpace &space = *setup.manipulationSpace();
+            for (std::size_t k = 0; k + 1 < path.getStateCount(); ++k)
+            {
+                toolLength +=
+                    (space.toolPosition(path.getState(k + 1)) - space.toolPosition(path.getState(k))).norm();
+                if (path.label(k).kind == PrimitiveKind::Push &&
+                    (k == 0 || !(path.label(k - 1) == path.label(k))))
+                    ++pushes;
+            }
+            EXPECT_NEAR(std::stod(run.at("solution tool path length REAL")), toolLength, 1e-9 * toolLength);
+            EXPECT_EQ(run.at("solution push count INTEGER"), std::to_string(pushes));
             ++rechecked;
         });
     ompl::tools::Benchmark::Request request;  // OMPL's defaults: simplify = true
