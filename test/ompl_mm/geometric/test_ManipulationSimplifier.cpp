@@ -155,6 +155,35 @@ TEST_F(SimplifierBlocked, ANeededPushOutStaysAndOnlyTheReturnGoesWhenTheGoalAllo
         << "obj2 stays where the push out left it";
 }
 
+TEST_F(SimplifierBlocked, AReturnEndsAtItsFirstWaypointThatTheGoalAllows)
+{
+    // as above, but the push back runs in three pushes and the goal has the robot just north of
+    // obj2's start: obj2 can stay neither where it was (the robot was shut in) nor where the return
+    // found it (on the robot's goal); the return ends at (0.8, 0.0), its first waypoint clear of it
+    ManipulationPath path(si_);
+    append(path, 0.8, -1.01, 0.8, -0.1, TRANSIT);
+    append(path, 0.8, -0.1 - STANDOFF, 0.8, -0.1, TRANSIT);
+    append(path, 0.8, 0.3 - STANDOFF, 0.8, 0.3, PUSH_OBJ2);
+    append(path, 0.35, 0.3 - STANDOFF, 0.8, 0.3, TRANSIT);
+    append(path, 0.35, 0.3 + STANDOFF, 0.8, 0.3, TRANSIT);
+    append(path, 0.8, 0.3 + STANDOFF, 0.8, 0.3, TRANSIT);
+    append(path, 0.8, 0.15 + STANDOFF, 0.8, 0.15, PUSH_OBJ2);
+    append(path, 0.8, 0.0 + STANDOFF, 0.8, 0.0, PUSH_OBJ2);
+    append(path, 0.8, -0.1 + STANDOFF, 0.8, -0.1, PUSH_OBJ2);
+    append(path, 0.8, 0.45, 0.8, -0.1, TRANSIT);
+    ASSERT_TRUE(path.check());
+    ASSERT_EQ(ManipulationSimplifier::countRoundTrips(path), 1u);
+    const RobotAt goal(si_, 0.8, 0.45);
+    ompl::RNG rng(3);
+    EXPECT_EQ(simplifier_.simplify(path, 0, rng, &goal).roundTripsRemoved, 1u);
+    EXPECT_EQ(ManipulationSimplifier::countRoundTrips(path), 0u);
+    EXPECT_TRUE(path.check());
+    EXPECT_EQ(path.checkLabels(), "");
+    const ob::State *end = path.getState(path.getStateCount() - 1);
+    EXPECT_TRUE(goal.isSatisfied(end));
+    EXPECT_NEAR((space_.objectPosition(end, 1) - Eigen::Vector3d(0.8, 0.0, 0.0)).norm(), 0.0, 1e-12);
+}
+
 TEST_F(Simplifier, ShortensTransitsAndPushRuns)
 {
     // a zig-zag of transits south of obj2, then a push of it in three steps
