@@ -93,6 +93,20 @@ namespace
     {
     protected:
         SimplifierBlocked() : Simplifier(mobileBlockedScene()) {}
+
+        /** obj2 at its start closes the robot's corner south-east of it: the robot pushes it 0.4 m
+            north and walks round it to its north side. */
+        ManipulationPath pushedOutAndWalkedRound()
+        {
+            ManipulationPath path(si_);
+            append(path, 0.8, -1.01, 0.8, -0.1, TRANSIT);
+            append(path, 0.8, -0.1 - STANDOFF, 0.8, -0.1, TRANSIT);
+            append(path, 0.8, 0.3 - STANDOFF, 0.8, 0.3, PUSH_OBJ2);
+            append(path, 0.35, 0.3 - STANDOFF, 0.8, 0.3, TRANSIT);
+            append(path, 0.35, 0.3 + STANDOFF, 0.8, 0.3, TRANSIT);
+            append(path, 0.8, 0.3 + STANDOFF, 0.8, 0.3, TRANSIT);
+            return path;
+        }
     };
 }  // namespace
 
@@ -122,15 +136,9 @@ TEST_F(Simplifier, APushThereAndBackBecomesNoPush)
 
 TEST_F(SimplifierBlocked, ANeededPushOutStaysAndOnlyTheReturnGoesWhenTheGoalAllows)
 {
-    // obj2 at its start closes the robot's corner south-east of it: the push out is needed, the
-    // push back is not, but without a goal the end of the path (obj2 back home) must stay
-    ManipulationPath path(si_);
-    append(path, 0.8, -1.01, 0.8, -0.1, TRANSIT);
-    append(path, 0.8, -0.1 - STANDOFF, 0.8, -0.1, TRANSIT);
-    append(path, 0.8, 0.3 - STANDOFF, 0.8, 0.3, PUSH_OBJ2);
-    append(path, 0.35, 0.3 - STANDOFF, 0.8, 0.3, TRANSIT);
-    append(path, 0.35, 0.3 + STANDOFF, 0.8, 0.3, TRANSIT);
-    append(path, 0.8, 0.3 + STANDOFF, 0.8, 0.3, TRANSIT);
+    // the push out is needed, the push back is not, but without a goal the end of the path (obj2
+    // back home) must stay
+    ManipulationPath path = pushedOutAndWalkedRound();
     append(path, 0.8, -0.1 + STANDOFF, 0.8, -0.1, PUSH_OBJ2);
     append(path, 0.35, 0.9, 0.8, -0.1, TRANSIT);
     ASSERT_TRUE(path.check());
@@ -160,13 +168,7 @@ TEST_F(SimplifierBlocked, AReturnEndsAtItsFirstWaypointThatTheGoalAllows)
     // as above, but the push back runs in three pushes and the goal has the robot just north of
     // obj2's start: obj2 can stay neither where it was (the robot was shut in) nor where the return
     // found it (on the robot's goal); the return ends at (0.8, 0.0), its first waypoint clear of it
-    ManipulationPath path(si_);
-    append(path, 0.8, -1.01, 0.8, -0.1, TRANSIT);
-    append(path, 0.8, -0.1 - STANDOFF, 0.8, -0.1, TRANSIT);
-    append(path, 0.8, 0.3 - STANDOFF, 0.8, 0.3, PUSH_OBJ2);
-    append(path, 0.35, 0.3 - STANDOFF, 0.8, 0.3, TRANSIT);
-    append(path, 0.35, 0.3 + STANDOFF, 0.8, 0.3, TRANSIT);
-    append(path, 0.8, 0.3 + STANDOFF, 0.8, 0.3, TRANSIT);
+    ManipulationPath path = pushedOutAndWalkedRound();
     append(path, 0.8, 0.15 + STANDOFF, 0.8, 0.15, PUSH_OBJ2);
     append(path, 0.8, 0.0 + STANDOFF, 0.8, 0.0, PUSH_OBJ2);
     append(path, 0.8, -0.1 + STANDOFF, 0.8, -0.1, PUSH_OBJ2);
