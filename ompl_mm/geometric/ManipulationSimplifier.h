@@ -14,8 +14,9 @@ namespace ompl_mm
         PathSimplifier only straightens motions one at a time and cannot drop a manipulation):
         1. removes pointless manipulation: an object pushed away and later back to where it was is
            left where it was (the pushes become the robot's transits, routed around the object
-           where they meet it) or, when that fails, the last return push ends early (where it found
-           the object, or at one of its waypoints short of the start) if the goal still holds;
+           where they meet it) or, when that fails, the return push ends early (where it found the
+           object, or at one of its waypoints short of the start) and the object stays there for
+           the rest of the way, if the goal still holds;
         2. runs the steps of OMPL's PathSimplifier (shortcuts, B-spline smoothing, vertex
            reduction), seeded from the caller's RNG, on a copy kept when all of it is valid and
            shorter; with the motion validator they shorten push runs as well as transit runs but

@@ -142,12 +142,12 @@ namespace ompl_mm
                     const ObjectPose before = space_->objectPose(path.getState(runs[i].first), object);
                     if (!samePose(before, space_->objectPose(path.getState(runs[j].second), object)))
                         continue;
-                    // leave the object where it was; or, when that fails, end the last return early:
-                    // where it found the object, or at one of its waypoints short of the start
+                    // leave the object where it was; or, when that fails, end the return early (where
+                    // it found the object, or at one of its waypoints short of the start) and leave
+                    // the object there for the rest of the way
                     if (holdObject(path, object, before, runs[i].first, runs[j].second, goal, rng))
                         return true;
-                    for (std::size_t stop = runs[j].first; j + 1 == runs.size() && stop < runs[j].second;
-                         ++stop)
+                    for (std::size_t stop = runs[j].first; stop < runs[j].second; ++stop)
                         if (holdObject(path, object, space_->objectPose(path.getState(stop), object), stop,
                                        path.getStateCount() - 1, goal, rng))
                             return true;

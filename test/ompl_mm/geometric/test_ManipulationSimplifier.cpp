@@ -186,6 +186,32 @@ TEST_F(SimplifierBlocked, AReturnEndsAtItsFirstWaypointThatTheGoalAllows)
     EXPECT_NEAR((space_.objectPosition(end, 1) - Eigen::Vector3d(0.8, 0.0, 0.0)).norm(), 0.0, 1e-12);
 }
 
+TEST_F(SimplifierBlocked, AReturnEndsEarlyAlsoWhenTheObjectIsPushedOnLater)
+{
+    // as above, but after its return obj2 is pushed 0.2 m east: that push goes too, and obj2 stays
+    // at the return's first waypoint clear of the goal for the rest of the way
+    ManipulationPath path = pushedOutAndWalkedRound();
+    append(path, 0.8, 0.15 + STANDOFF, 0.8, 0.15, PUSH_OBJ2);
+    append(path, 0.8, 0.0 + STANDOFF, 0.8, 0.0, PUSH_OBJ2);
+    append(path, 0.8, -0.1 + STANDOFF, 0.8, -0.1, PUSH_OBJ2);
+    append(path, 0.3, -0.1 + STANDOFF, 0.8, -0.1, TRANSIT);
+    append(path, 0.8 - STANDOFF, -0.1, 0.8, -0.1, TRANSIT);
+    append(path, 1.0 - STANDOFF, -0.1, 1.0, -0.1, PUSH_OBJ2);
+    append(path, 0.45, 0.2, 1.0, -0.1, TRANSIT);
+    append(path, 0.8, 0.45, 1.0, -0.1, TRANSIT);
+    ASSERT_TRUE(path.check());
+    ASSERT_EQ(ManipulationSimplifier::countRoundTrips(path), 1u);
+    const RobotAt goal(si_, 0.8, 0.45);
+    ompl::RNG rng(3);
+    EXPECT_EQ(simplifier_.simplify(path, 0, rng, &goal).roundTripsRemoved, 1u);
+    EXPECT_EQ(ManipulationSimplifier::countRoundTrips(path), 0u);
+    EXPECT_TRUE(path.check());
+    EXPECT_EQ(path.checkLabels(), "");
+    const ob::State *end = path.getState(path.getStateCount() - 1);
+    EXPECT_TRUE(goal.isSatisfied(end));
+    EXPECT_NEAR((space_.objectPosition(end, 1) - Eigen::Vector3d(0.8, 0.0, 0.0)).norm(), 0.0, 1e-12);
+}
+
 TEST_F(Simplifier, ShortensTransitsAndPushRuns)
 {
     // a zig-zag of transits south of obj2, then a push of it in three steps
