@@ -107,6 +107,24 @@ namespace
             append(path, 0.8, 0.3 + STANDOFF, 0.8, 0.3, TRANSIT);
             return path;
         }
+
+        /** Smooths a path that pushes obj2 out, back in three pushes to (0.8, -0.1), and brings the
+            robot to (0.8, 0.45): obj2 can stay neither where it was nor where the return found it,
+            and must end at the return's second waypoint, (0.8, 0.0). */
+        void expectReturnEndedAtItsSecondWaypoint(ManipulationPath &path)
+        {
+            ASSERT_TRUE(path.check());
+            ASSERT_EQ(ManipulationSimplifier::countRoundTrips(path), 1u);
+            const RobotAt goal(si_, 0.8, 0.45);
+            ompl::RNG rng(3);
+            EXPECT_EQ(simplifier_.simplify(path, 0, rng, &goal).roundTripsRemoved, 1u);
+            EXPECT_EQ(ManipulationSimplifier::countRoundTrips(path), 0u);
+            EXPECT_TRUE(path.check());
+            EXPECT_EQ(path.checkLabels(), "");
+            const ob::State *end = path.getState(path.getStateCount() - 1);
+            EXPECT_TRUE(goal.isSatisfied(end));
+            EXPECT_NEAR((space_.objectPosition(end, 1) - Eigen::Vector3d(0.8, 0.0, 0.0)).norm(), 0.0, 1e-12);
+        }
     };
 }  // namespace
 
@@ -173,17 +191,7 @@ TEST_F(SimplifierBlocked, AReturnEndsAtItsFirstWaypointThatTheGoalAllows)
     append(path, 0.8, 0.0 + STANDOFF, 0.8, 0.0, PUSH_OBJ2);
     append(path, 0.8, -0.1 + STANDOFF, 0.8, -0.1, PUSH_OBJ2);
     append(path, 0.8, 0.45, 0.8, -0.1, TRANSIT);
-    ASSERT_TRUE(path.check());
-    ASSERT_EQ(ManipulationSimplifier::countRoundTrips(path), 1u);
-    const RobotAt goal(si_, 0.8, 0.45);
-    ompl::RNG rng(3);
-    EXPECT_EQ(simplifier_.simplify(path, 0, rng, &goal).roundTripsRemoved, 1u);
-    EXPECT_EQ(ManipulationSimplifier::countRoundTrips(path), 0u);
-    EXPECT_TRUE(path.check());
-    EXPECT_EQ(path.checkLabels(), "");
-    const ob::State *end = path.getState(path.getStateCount() - 1);
-    EXPECT_TRUE(goal.isSatisfied(end));
-    EXPECT_NEAR((space_.objectPosition(end, 1) - Eigen::Vector3d(0.8, 0.0, 0.0)).norm(), 0.0, 1e-12);
+    expectReturnEndedAtItsSecondWaypoint(path);
 }
 
 TEST_F(SimplifierBlocked, AReturnEndsEarlyAlsoWhenTheObjectIsPushedOnLater)
@@ -199,17 +207,7 @@ TEST_F(SimplifierBlocked, AReturnEndsEarlyAlsoWhenTheObjectIsPushedOnLater)
     append(path, 1.0 - STANDOFF, -0.1, 1.0, -0.1, PUSH_OBJ2);
     append(path, 0.45, 0.2, 1.0, -0.1, TRANSIT);
     append(path, 0.8, 0.45, 1.0, -0.1, TRANSIT);
-    ASSERT_TRUE(path.check());
-    ASSERT_EQ(ManipulationSimplifier::countRoundTrips(path), 1u);
-    const RobotAt goal(si_, 0.8, 0.45);
-    ompl::RNG rng(3);
-    EXPECT_EQ(simplifier_.simplify(path, 0, rng, &goal).roundTripsRemoved, 1u);
-    EXPECT_EQ(ManipulationSimplifier::countRoundTrips(path), 0u);
-    EXPECT_TRUE(path.check());
-    EXPECT_EQ(path.checkLabels(), "");
-    const ob::State *end = path.getState(path.getStateCount() - 1);
-    EXPECT_TRUE(goal.isSatisfied(end));
-    EXPECT_NEAR((space_.objectPosition(end, 1) - Eigen::Vector3d(0.8, 0.0, 0.0)).norm(), 0.0, 1e-12);
+    expectReturnEndedAtItsSecondWaypoint(path);
 }
 
 TEST_F(Simplifier, ShortensTransitsAndPushRuns)
