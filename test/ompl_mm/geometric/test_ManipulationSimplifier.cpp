@@ -269,6 +269,20 @@ TEST_F(Simplifier, ReplannedWindowsMakeOnePushOfTwo)
     expectValidAndSameEnds(path, original);
 }
 
+TEST_F(Simplifier, AWindowNoShorterThanBeforeIsNotReplaced)
+{
+    // a straight approach and a straight push: the empty-space planner plans the same again, which
+    // is no shorter, so the path keeps it
+    ManipulationPath path(si_);
+    append(path, 0.0, 0.7, 0.0, 1.4, TRANSIT);
+    append(path, 0.0, 1.4 - STANDOFF, 0.0, 1.4, TRANSIT);
+    append(path, 0.0, 1.7 - STANDOFF, 0.0, 1.7, PUSH_OBJ2);
+    ASSERT_TRUE(path.check());
+    ompl::RNG rng(2);
+    EXPECT_EQ(simplifier_.simplify(path, 50, rng, nullptr).windowsReplanned, 0u);
+    EXPECT_EQ(path.getStateCount(), 3u);
+}
+
 TEST_F(Simplifier, NeedsTheManipulationMotionValidator)
 {
     auto si = std::make_shared<ob::SpaceInformation>(setup_.getStateSpace());
