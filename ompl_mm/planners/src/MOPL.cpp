@@ -267,15 +267,19 @@ namespace ompl_mm
             const ob::State *start = trajectory.state(forward ? i : i + 1);
             const ob::State *end = trajectory.state(forward ? i + 1 : i);
             const SegmentLabel label = trajectory.label(i);
+            // pieces a whole vertex step long, the last one the rest, which takes in a rest shorter
+            // than a connect step: shorter pieces would grow the trees (and the nearest-neighbour
+            // search) with no gain in reach
+            const double length = segmentLength(start, end);
             const unsigned int pieces =
-                std::max(1u, static_cast<unsigned int>(std::ceil(segmentLength(start, end) / vertexStep_)));
+                std::max(1u, static_cast<unsigned int>(std::ceil((length - connectStep_) / vertexStep_)));
             space_->copyState(from, start);
             for (unsigned int k = 1; k <= pieces && !blocked; ++k)
             {
                 if (k == pieces)
                     space_->copyState(to, end);
                 else
-                    space_->interpolate(start, end, static_cast<double>(k) / pieces, to);
+                    space_->interpolate(start, end, k * vertexStep_ / length, to);
                 const CollisionWorld::SweepCheck check = motions_->checkSweep(from, to);
                 blocked = !check.free || !si_->isValid(to);
                 if (blocked && check.free)

@@ -183,7 +183,7 @@ TEST(MOPL, RestartsClearTheTreesAndStillSolve)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     ManipulationSetup setup(mobileBlockedScene());
-    setup.mopl()->setSeed(3);
+    setup.mopl()->setSeed(8);
     setup.mopl()->setRestartIterations(300);  // far below a typical run: forces restarts
     ASSERT_EQ(boundedSolve(setup), ompl::base::PlannerStatus::EXACT_SOLUTION);
     const MOPLStatistics &stats = setup.mopl()->statistics();
