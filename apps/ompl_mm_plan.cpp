@@ -1,6 +1,7 @@
 // ompl_mm_plan: plans a manipulation scene with MOPL and reports the result.
 // Exit codes: 0 solved, 1 not solved, 2 bad input.
 #include "common/AppSupport.h"
+#include "common/RunTermination.h"
 #include "ompl_mm/io/ManipulationRunResult.h"
 #include "ompl_mm/io/PathFile.h"
 #include "ompl_mm/io/SceneSvg.h"
@@ -12,7 +13,6 @@
 
 #include <boost/program_options.hpp>
 
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 
@@ -88,24 +88,34 @@ namespace
         if (const std::shared_ptr<ompl_mm::MOPL> mopl = setup.mopl())
             mopl->setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         // open the outputs first: a bad path should not cost a whole planning run
-        std::ofstream json = apps::openOutput(options.common.json);
-        std::ofstream svg = apps::openOutput(options.common.svg);
-        std::ofstream path = apps::openOutput(options.path);
+        apps::OutputFile json(options.common.json);
+        apps::OutputFile svg(options.common.svg);
+        apps::OutputFile path(options.path);
 
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
-        setup.solve(timeLimit);
+        setup.solve(apps::runTermination(timeLimit));
         const bool solved = setup.getProblemDefinition()->hasExactSolution();
         if (solved && !setup.manipulationPath().check())
             OMPL_ERROR("ompl_mm_plan: the solution failed OMPL's path re-check");
 
         printSummary(scene, setup, options);
-        if (json.is_open())
-            ompl_core::writeRunJson(
-                json, ompl_mm::manipulationRunResult(options.common.describe(scene.name, timeLimit), setup));
-        if (svg.is_open())
-            ompl_mm::writeSceneSvg(svg, setup, solved ? &setup.manipulationPath() : nullptr);
-        if (path.is_open() && solved)
-            ompl_mm::writePathFile(path, setup.manipulationPath());
+        if (json.isOpen())
+        {
+            ompl_core::writeRunJson(json.stream(), ompl_mm::manipulationRunResult(
+                                                       options.common.describe(scene.name, timeLimit), setup));
+            json.commit();
+        }
+        if (svg.isOpen())
+        {
+            ompl_mm::writeSceneSvg(svg.stream(), setup, solved ? &setup.manipulationPath() : nullptr);
+            svg.commit();
+        }
+        if (path.isOpen())
+        {
+            if (solved)  // without a solution the file stays empty
+                ompl_mm::writePathFile(path.stream(), setup.manipulationPath());
+            path.commit();
+        }
         return solved ? 0 : 1;
     }
 }  // namespace

@@ -2,6 +2,7 @@
 // re-simulates the solution from its controls and reports the result.
 // Exit codes: 0 solved, 1 not solved, 2 bad input.
 #include "common/AppSupport.h"
+#include "common/RunTermination.h"
 #include "ompl_phys/control/PathSimulation.h"
 #include "ompl_phys/control/PhysicsSetup.h"
 #include "ompl_phys/io/PhysicsPathFile.h"
@@ -84,12 +85,12 @@ namespace
             return 0;
         }
         // open the outputs first: a bad path should not cost a whole planning run
-        std::ofstream json = apps::openOutput(options.common.json);
-        std::ofstream svg = apps::openOutput(options.common.svg);
-        std::ofstream path = apps::openOutput(options.path);
+        apps::OutputFile json(options.common.json);
+        apps::OutputFile svg(options.common.svg);
+        apps::OutputFile path(options.path);
 
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
-        setup.solve(timeLimit);
+        setup.solve(apps::runTermination(timeLimit));
         const bool solved = setup.haveExactSolution();
         std::optional<ompl_phys::SimulatedPath> simulated;
         if (solved)
@@ -101,15 +102,25 @@ namespace
         }
         const ompl_phys::SimulatedPath *result = simulated ? &*simulated : nullptr;
         printSummary(setup, options, result);
-        if (json.is_open())
-            ompl_core::writeRunJson(json, ompl_phys::physicsRunResult(
-                                              options.common.describe(scene.name, timeLimit), setup, result));
-        if (svg.is_open())
-            ompl_phys::writePhysicsSceneSvg(svg, setup, result,
+        if (json.isOpen())
+        {
+            ompl_core::writeRunJson(json.stream(), ompl_phys::physicsRunResult(
+                                                       options.common.describe(scene.name, timeLimit), setup, result));
+            json.commit();
+        }
+        if (svg.isOpen())
+        {
+            ompl_phys::writePhysicsSceneSvg(svg.stream(), setup, result,
                                             scene.name + " · " + options.common.planner + " · seed " +
                                                 std::to_string(options.common.seed));
-        if (path.is_open() && result)
-            ompl_phys::writeSimulatedPathFile(path, setup, *result);
+            svg.commit();
+        }
+        if (path.isOpen())
+        {
+            if (result)  // without a solution the file stays empty
+                ompl_phys::writeSimulatedPathFile(path.stream(), setup, *result);
+            path.commit();
+        }
         return solved ? 0 : 1;
     }
 }  // namespace

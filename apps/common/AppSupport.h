@@ -1,9 +1,10 @@
 /* What the command-line apps share: the common options (scene, --planner, --seed, --time-limit,
-   --param, --list-params, --json, --svg, --verbose) with their checks, output files opened before planning,
-   the run description, and the mapping of failures to exit codes (2 for bad input, with the message on stderr
-   prefixed by the app's name). */
+   --param, --list-params, --json, --svg, --verbose) with their checks, the run description, and the
+   mapping of failures to exit codes (2 for bad input, 1 for an output file that could not be written,
+   with the message on stderr prefixed by the app's name). */
 #pragma once
 
+#include "common/OutputFile.h"
 #include "ompl_core/io/InputError.h"
 #include "ompl_core/run/ParameterSetting.h"
 #include "ompl_core/run/RunRecord.h"
@@ -12,7 +13,6 @@
 
 #include <boost/program_options.hpp>
 
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -85,7 +85,8 @@ namespace apps
             "param", po::value(&options.params)->composing(),
             "NAME=VALUE: set a declared parameter of the planner (repeatable; after the scene's)")(
             "time-limit", po::value(&options.timeLimit),
-            "planning time limit in seconds (default: the scene's)")("json", po::value(&options.json),
+            "planning time limit in seconds (default: the scene's; inf or above 1e8: none; Ctrl-C ends a run "
+            "early and still writes its results)")("json", po::value(&options.json),
                                                                      "write the result as JSON to this file")(
             "svg", po::value(&options.svg), "write a top-down picture of the plan to this SVG file")(
             "verbose,v", po::bool_switch(&options.verbose), "print OMPL's informational messages")(
@@ -113,21 +114,9 @@ namespace apps
         return true;
     }
 
-    /** An output file, or a closed stream for an empty path. @throws ompl_core::InputError when it cannot be
-     * written. */
-    inline std::ofstream openOutput(const std::string &path)
-    {
-        std::ofstream out;
-        if (path.empty())
-            return out;
-        out.open(path);
-        if (!out)
-            throw ompl_core::InputError(path + ": cannot write file");
-        return out;
-    }
-
     /** Parses the command line with parse (false: exit with its code), sets OMPL's log level and
-        runs; turns bad command lines and bad input into exit code 2 with a message. */
+        runs; turns bad command lines and bad input into exit code 2, and an output file that could
+        not be written into exit code 1, with a message. */
     template <typename Options>
     int runApp(const char *name, const std::function<bool(Options &, int &)> &parse,
                const std::function<int(const Options &)> &run)
@@ -148,6 +137,11 @@ namespace apps
         catch (const ompl::Exception &e)
         {
             std::cerr << name << ": " << e.what() << '\n';
+        }
+        catch (const OutputError &e)
+        {
+            std::cerr << name << ": " << e.what() << '\n';
+            return 1;
         }
         return 2;
     }

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <map>
 #include <optional>
@@ -161,8 +162,12 @@ namespace ompl_core
         std::string file_;
     };
 
+    /** The largest input file read: 64 MiB, far above any scene or robot description. */
+    constexpr std::uintmax_t MAX_INPUT_FILE_BYTES = 64u << 20u;
+
     /** The whole text of an input file; what names the kind of file in messages ("scene file").
-        @throws InputError "path: <what> not found" (or a directory, or unreadable). */
+        @throws InputError "path: <what> not found" (or a directory, not a regular file such as
+        /dev/zero, larger than MAX_INPUT_FILE_BYTES, or unreadable). */
     std::string readInputFile(const std::string &path, const std::string &what);
 
     /** Parses xml into document and returns its only root element, which must be the element

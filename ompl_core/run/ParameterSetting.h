@@ -25,9 +25,15 @@ namespace ompl_core
         @throws InputError when there is no '=' or the name is empty. */
     ParameterSetting parseParameterOption(const std::string &text);
 
-    /** Sets each parameter on planner, in order (later settings win).
+    /** Sets each parameter on planner, in order (later settings win). Before OMPL converts a
+        value, it is checked against the parameter's type and declared range: a number must be a
+        finite decimal ("0x10", "inf" and "nan" are not), a parameter of an integer type takes whole
+        numbers within its type ("-1" does not wrap, "1.5" is not truncated), a boolean takes 0, 1,
+        true or false, and a value must lie within the range suggestion "LOW:STEP:HIGH" or
+        "LOW:HIGH" (bounds included), or be one of the values of a list "A,B,C".
         @throws InputError naming a setting's place for an unknown name (listing the planner's
-        parameters) or a value the planner rejects (with the parameter's range when it has one). */
+        parameters) or a value that fails these checks or that the planner rejects (with the
+        parameter's range when it has one). */
     void applyParameters(ompl::base::Planner &planner, const std::vector<ParameterSetting> &settings);
 
     /** The planner's declared parameters as "name = value (range)" in name order, with their

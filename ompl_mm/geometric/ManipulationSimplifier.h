@@ -6,6 +6,7 @@
 #include "ompl_mm/primitives/EmptySpacePlanner.h"
 
 #include <ompl/base/Goal.h>
+#include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/util/RandomNumbers.h>
 
 namespace ompl_mm
@@ -45,9 +46,12 @@ namespace ompl_mm
 
         /** Simplifies path in place with `windowAttempts` random windows, drawing from rng. goal
             (may be null: the path's end then stays where it is) tells whether a changed end
-            still solves the problem. */
+            still solves the problem. Stops early, with a valid path, when ptc says so (a planner's
+            time limit). */
         Outcome simplify(ManipulationPath &path, unsigned int windowAttempts, ompl::RNG &rng,
-                         const ompl::base::Goal *goal) const;
+                         const ompl::base::Goal *goal,
+                         const ompl::base::PlannerTerminationCondition &ptc =
+                             ompl::base::plannerNonTerminatingCondition()) const;
 
         /** Number of round trips in path: push runs (consecutive segments pushing one object)
             after which the object stands where it stood before the same or an earlier push run

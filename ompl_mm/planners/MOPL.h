@@ -134,7 +134,7 @@ namespace ompl_mm
         Extension walk(ManipulationTree &tree, int near, const Trajectory &trajectory);
         double segmentLength(const ompl::base::State *a, const ompl::base::State *b) const;
         /** Builds, smooths and records the solution through forward vertex f and goal vertex g. */
-        void addSolution(int f, int g);
+        void addSolution(int f, int g, const ompl::base::PlannerTerminationCondition &ptc);
         /** Clears both trees but the start. */
         void restart();
 

@@ -154,3 +154,60 @@ PY
         not_ok "SVG is well-formed XML with an <svg> root" "$report"
     fi
 }
+
+# check_output_failure ARGS...: the app with ARGS and --json /dev/full (a device whose every write
+# fails, as on a full disk) plans, then exits 1 naming the file
+check_output_failure() {
+    run full_disk "$@" --json /dev/full
+    if [ $status -eq 1 ] && grep -q -F -- "/dev/full: writing the file failed" "$err"; then
+        ok "--json /dev/full: exit 1 naming the file"
+    else
+        not_ok "--json /dev/full: exit 1 naming the file" "command: $plan $* --json /dev/full" \
+            "expected exit 1, got $status" "$(outputs)"
+    fi
+}
+
+# check_interrupt SCENE ARGS...: a run without a time limit (--time-limit inf) that cannot end by
+# itself within a second ends within two seconds of Ctrl-C (SIGINT), exits 1 and still writes its
+# JSON, with the time limit written as null
+check_interrupt() {
+    local json=$scratch/interrupted.json
+    rm -f "$json"
+    "$plan" "$@" --time-limit inf --json "$json" >"$scratch/interrupt.out" 2>"$scratch/interrupt.err" &
+    local pid=$! started
+    sleep 1
+    started=$(date +%s.%N)
+    kill -INT $pid
+    local waited=0
+    while kill -0 $pid 2>/dev/null && [ $waited -lt 40 ]; do
+        sleep 0.05
+        waited=$((waited + 1))
+    done
+    if kill -0 $pid 2>/dev/null; then
+        kill -KILL $pid
+        wait $pid 2>/dev/null
+        not_ok "Ctrl-C ends a run without a time limit" "command: $plan $* --time-limit inf; still running 2 s after SIGINT"
+        return
+    fi
+    wait $pid
+    local code=$?
+    local elapsed
+    elapsed=$(python3 -c "import sys, time; print(f'{time.time() - float(sys.argv[1]):.2f}')" "$started")
+    if [ $code -eq 1 ] && python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if d["solved"] is False and d["time_limit_s"] is None else 1)' "$json" 2>/dev/null; then
+        ok "Ctrl-C ends a run without a time limit (after ${elapsed} s), exit 1, JSON written"
+    else
+        not_ok "Ctrl-C ends a run without a time limit, exit 1, JSON written" "command: $plan $* --time-limit inf" \
+            "exit $code" "json: $(head -c 300 "$json" 2>/dev/null)" "stderr: $(head -c 300 "$scratch/interrupt.err")"
+    fi
+}
+
+# check_no_temporary_files: every output was put in place; no temporary file is left in $scratch
+check_no_temporary_files() {
+    local left
+    left=$(find "$scratch" -name '*.tmp[0-9]*' | head -n 3)
+    if [ -z "$left" ]; then
+        ok "no temporary output file is left behind"
+    else
+        not_ok "no temporary output file is left behind" "found: $left"
+    fi
+}

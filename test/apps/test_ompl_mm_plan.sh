@@ -231,5 +231,32 @@ expect_bad_option "--param with a bad value" "bad value 'abc' for parameter 'con
 expect_bad_option "--param without NAME=" "expected NAME=VALUE" "$scene" --param connect_step
 expect_bad_option "unwritable --json path" "/nonexistent/dir/x.json" "$scene" --time-limit 1 --json /nonexistent/dir/x.json
 
+# parameter values are checked against their type and declared range (OMPL's own conversion wraps
+# -1 to 4294967295, truncates 1.5 and accepts 0x10; a tiny connect_step hung the run)
+expect_bad_option "--param restart_iterations=-1" "bad value '-1' for parameter 'restart_iterations' of planner MOPL (range 0:1000:1000000): out of the range of its type" \
+    "$scene" --param restart_iterations=-1
+expect_bad_option "--param restart_iterations=1.5" "(range 0:1000:1000000): must be a whole number" "$scene" --param restart_iterations=1.5
+expect_bad_option "--param restart_iterations=1e20" "bad value '1e20' for parameter 'restart_iterations'" "$scene" --param restart_iterations=1e20
+expect_bad_option "--param restart_iterations=0x10" "(range 0:1000:1000000): not a finite decimal number" "$scene" --param restart_iterations=0x10
+expect_bad_option "--param smoothing_attempts=-1" "bad value '-1' for parameter 'smoothing_attempts'" "$scene" --param smoothing_attempts=-1
+expect_bad_option "--param connect_step=1e-9" "bad value '1e-9' for parameter 'connect_step' of planner MOPL (range 0.001:0.001:1.): out of range" \
+    "$scene" --param connect_step=1e-9
+expect_bad_option "--param joint_weight=-1" "bad value '-1' for parameter 'joint_weight' of planner MOPL (range 0.:0.1:100.): out of range" \
+    "$scene" --param joint_weight=-1
+expect_bad_option "--param moving_object_penalty=-1" "bad value '-1' for parameter 'moving_object_penalty'" "$scene" --param moving_object_penalty=-1
+expect_bad_option "--param vertex_step=inf" "bad value 'inf' for parameter 'vertex_step'" "$scene" --param vertex_step=inf
+expect_bad "a device as the scene file" /dev/zero - "/dev/zero: is not a regular file, not a scene file"
+
+# a huge time limit means none (it used to overflow OMPL's clock and end the run at once)
+run huge_limit "$scene" --seed 1 --time-limit 1e10
+if [ $status -eq 0 ]; then
+    ok "--time-limit 1e10 plans without a practical limit and solves"
+else
+    not_ok "--time-limit 1e10 plans without a practical limit and solves" "expected exit 0, got $status" "$(outputs)"
+fi
+check_interrupt "$walled"
+check_output_failure "$scene" --seed 1
+check_no_temporary_files
+
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]

@@ -140,8 +140,16 @@ else
         "expected exit 1, got $status" "json: $(head -c 300 "$unsolved_json" 2>/dev/null)" "$(outputs)"
 fi
 
+# EST needs about 6 s for seed 1 of scene 2: Ctrl-C after 1 s finds it unsolved
+check_interrupt "$scenes/scene2.xml" --planner est --seed 1
+check_output_failure "$scenes/scene2.xml" --time-limit 0.01
+check_no_temporary_files
+
 # --- 5. bad input ------------------------------------------------------------------------------------
 expect_bad "missing scene file" "$scratch/scenes/no_such_scene.xml" - "not found"
+expect_bad "a device as the scene file" /dev/zero - "/dev/zero: is not a regular file, not a scene file"
+expect_bad_option "--param goal_bias=1.5" "bad value '1.5' for parameter 'goal_bias' of planner RRT (range 0.:.05:1.): out of range" \
+    "$scenes/scene2.xml" --planner rrt --param goal_bias=1.5
 
 # the unclosed element's line
 expect_bad_edit "malformed XML" malformed_xml '<goal xy="0.92 -1.0" radius="0.05"/>' '<goal xy="0.92 -1.0" radius="0.05">' \

@@ -87,16 +87,18 @@ namespace ompl_mm
     ManipulationSimplifier::Outcome ManipulationSimplifier::simplify(ManipulationPath &path,
                                                                      unsigned int windowAttempts,
                                                                      ompl::RNG &rng,
-                                                                     const ompl::base::Goal *goal) const
+                                                                     const ompl::base::Goal *goal,
+                                                                     const ompl::base::PlannerTerminationCondition &ptc) const
     {
         Outcome outcome;
         path.removeRepeatedStates();
-        while (removeRoundTrip(path, goal, rng))
+        while (!ptc && removeRoundTrip(path, goal, rng))
             ++outcome.roundTripsRemoved;
-        shortenWithOMPL(path, rng);
+        if (!ptc)
+            shortenWithOMPL(path, rng);
         // windows from one primitive run's start to a later run's end: what OMPL's shortcuts cannot
         // do, since they keep every manipulation, is to chain primitives anew across runs
-        for (unsigned int attempt = 0; attempt < windowAttempts; ++attempt)
+        for (unsigned int attempt = 0; attempt < windowAttempts && !ptc; ++attempt)
         {
             const std::vector<std::size_t> bounds = runBoundaries(path);
             if (bounds.size() < 3)

@@ -342,7 +342,7 @@ namespace ompl_mm
 
         if (goal_->isSatisfied(startTree_->vertex(0).state))
         {
-            addSolution(0, -1);
+            addSolution(0, -1, ptc);
             return ob::PlannerStatus::EXACT_SOLUTION;
         }
 
@@ -382,7 +382,7 @@ namespace ompl_mm
             }
             if (a.forward() && goal_->isSatisfied(a.vertex(grown.last).state))
             {
-                addSolution(grown.last, -1);
+                addSolution(grown.last, -1, ptc);
                 countQueries();
                 return ob::PlannerStatus::EXACT_SOLUTION;
             }
@@ -399,9 +399,9 @@ namespace ompl_mm
             if (joined.reached)
             {
                 if (a.forward())
-                    addSolution(grown.last, joined.last);
+                    addSolution(grown.last, joined.last, ptc);
                 else
-                    addSolution(joined.last, grown.last);
+                    addSolution(joined.last, grown.last, ptc);
                 countQueries();
                 return ob::PlannerStatus::EXACT_SOLUTION;
             }
@@ -413,7 +413,7 @@ namespace ompl_mm
         return ob::PlannerStatus::TIMEOUT;
     }
 
-    void MOPL::addSolution(int f, int g)
+    void MOPL::addSolution(int f, int g, const ob::PlannerTerminationCondition &ptc)
     {
         auto path = std::make_shared<ManipulationPath>(si_);
         for (int index : startTree_->branch(f))
@@ -434,7 +434,7 @@ namespace ompl_mm
         }
         {
             ScopedTimer timer(statistics_.smoothingTime);
-            simplifier_->simplify(*path, smoothingAttempts_, rng_, pdef_->getGoal().get());
+            simplifier_->simplify(*path, smoothingAttempts_, rng_, pdef_->getGoal().get(), ptc);
         }
         pdef_->addSolutionPath(path, false, 0.0, getName());
     }

@@ -8,13 +8,13 @@
 #include <algorithm>
 #include <boost/math/constants/constants.hpp>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <tuple>
 #include <utility>
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/XmlReading.h"
 
 namespace ompl_mm
 {
@@ -238,12 +238,7 @@ namespace ompl_mm
 
     RobotModel RobotModel::fromUrdfFile(const std::string &path)
     {
-        std::ifstream in(path);
-        if (!in)
-            throw ompl_core::InputError(ompl_core::SourceLocation{path, 0}, "cannot read URDF file");
-        std::ostringstream text;
-        text << in.rdbuf();
-        return fromUrdfString(text.str(), path);
+        return fromUrdfString(ompl_core::readInputFile(path, "URDF file"), path);
     }
 
     RobotModel RobotModel::fromUrdfString(const std::string &urdf, const std::string &sourceName)

@@ -182,8 +182,24 @@ TEST(ReadInputFile, UnreadableFile)
     std::strcpy(address.sun_path, file.c_str());
     ASSERT_EQ(::bind(fd, reinterpret_cast<const sockaddr *>(&address), sizeof(address)), 0);
     EXPECT_EQ(inputErrorOf([&] { readInputFile(file.string(), "URDF file"); }),
-              file.string() + ": cannot read the URDF file");
+              file.string() + ": is not a regular file, not a URDF file");
     ::close(fd);
+}
+
+TEST(ReadInputFile, RejectsDevicesAndHugeFilesBeforeReading)
+{
+    // /dev/zero would be read forever
+    EXPECT_EQ(inputErrorOf([&] { readInputFile("/dev/zero", "scene file"); }),
+              "/dev/zero: is not a regular file, not a scene file");
+    // a sparse file just over the limit costs no disk; one at the limit is read
+    const std::filesystem::path file = scratchDirectory() / "huge.xml";
+    { std::ofstream(file) << "<r/>"; }
+    std::filesystem::resize_file(file, MAX_INPUT_FILE_BYTES + 1);
+    EXPECT_EQ(inputErrorOf([&] { readInputFile(file.string(), "scene file"); }),
+              file.string() + ": scene file of 67108865 bytes is larger than the limit of 67108864 bytes");
+    std::filesystem::resize_file(file, MAX_INPUT_FILE_BYTES);
+    EXPECT_EQ(readInputFile(file.string(), "scene file").size(), MAX_INPUT_FILE_BYTES);
+    std::filesystem::remove(file);
 }
 
 // --- attributes and children ------------------------------------------------------------------------------

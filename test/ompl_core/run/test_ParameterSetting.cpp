@@ -24,8 +24,9 @@ using ompl_core::test::startsWith;
 namespace
 {
     /** A planner that only declares parameters: range (double, with a range suggestion), steps (int,
-        no suggestion; its setter throws for a negative value) and mode (a string whose setter rejects
-        anything but "fast" and "slow" with std::invalid_argument, which OMPL turns into "not set"). */
+        no suggestion; its setter throws for a negative value), mode (a string whose setter rejects
+        anything but "fast" and "slow" with std::invalid_argument, which OMPL turns into "not set"),
+        count (unsigned int in 0:1:100), level (unsigned int from the list 1,2,4) and flag (bool). */
     class TinyPlanner : public ompl::base::Planner
     {
     public:
@@ -50,12 +51,23 @@ namespace
                     mode_ = mode;
                 },
                 [this] { return mode_; });
+            params().declareParam<unsigned int>(
+                "count", [this](unsigned int count) { count_ = count; }, [this] { return count_; });
+            params()["count"].setRangeSuggestion("0:1:100");
+            params().declareParam<unsigned int>(
+                "level", [this](unsigned int level) { level_ = level; }, [this] { return level_; });
+            params()["level"].setRangeSuggestion("1,2,4");
+            params().declareParam<bool>(
+                "flag", [this](bool flag) { flag_ = flag; }, [this] { return flag_; });
         }
 
         void setRange(double range) { range_ = range; }
         double getRange() const { return range_; }
         int steps() const { return steps_; }
         const std::string &mode() const { return mode_; }
+        unsigned int count() const { return count_; }
+        unsigned int level() const { return level_; }
+        bool flag() const { return flag_; }
 
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &) override
         {
@@ -66,6 +78,9 @@ namespace
         double range_{0.5};
         int steps_{3};
         std::string mode_{"fast"};
+        unsigned int count_{7};
+        unsigned int level_{1};
+        bool flag_{false};
     };
 
     ompl::base::SpaceInformationPtr plane()
@@ -137,13 +152,13 @@ TEST(ApplyParameters, UnknownNameListsTheKnownOnes)
                   [&] {
                       applyParameters(planner, {at(1, "range", "1"), at(4, "rnage", "2")});
                   }),
-              "s.xml:4: unknown parameter 'rnage' of planner Tiny (known: mode, range, steps)");
+              "s.xml:4: unknown parameter 'rnage' of planner Tiny (known: count, flag, level, mode, range, steps)");
     // the settings before it were applied
     EXPECT_EQ(planner.getRange(), 1.0);
     // from the command line: no line
     EXPECT_EQ(inputErrorOf([&] { applyParameters(planner, {parseParameterOption("Range=1")}); }),
-              "command line option --param: unknown parameter 'Range' of planner Tiny (known: mode, range, "
-              "steps)");
+              "command line option --param: unknown parameter 'Range' of planner Tiny (known: count, flag, "
+              "level, mode, range, steps)");
 }
 
 TEST(ApplyParameters, RejectedValueNamesTheRange)
@@ -183,14 +198,65 @@ TEST(ApplyParameters, RejectedValueGivesTheReasonOfAThrowingSetter)
         << message;
 }
 
+TEST(ApplyParameters, ValuesAreCheckedAgainstTheirTypeAndRangeBeforeOMPLConvertsThem)
+{
+    const QuietOmpl quiet;
+    TinyPlanner planner(plane());
+    const auto problem = [&](const std::string &name, const std::string &value)
+    { return inputErrorOf([&] { applyParameters(planner, {at(9, name, value)}); }); };
+    // OMPL's own conversion would wrap -1 to 4294967295, truncate 1.5 to 1 and read 0x10 or inf
+    const struct
+    {
+        const char *name, *value, *range, *reason;
+    } rejected[] = {
+        {"count", "-1", " (range 0:1:100)", "out of the range of its type"},
+        {"count", "1.5", " (range 0:1:100)", "must be a whole number"},
+        {"count", "0x10", " (range 0:1:100)", "not a finite decimal number"},
+        {"count", "1e20", " (range 0:1:100)", "out of the range of its type"},
+        {"count", "101", " (range 0:1:100)", "out of range"},
+        {"range", "inf", " (range 0.:1.:10.)", "not a finite decimal number"},
+        {"range", "nan", " (range 0.:1.:10.)", "not a finite decimal number"},
+        {"range", "-0.001", " (range 0.:1.:10.)", "out of range"},
+        {"range", "10.001", " (range 0.:1.:10.)", "out of range"},
+        {"level", "3", " (range 1,2,4)", "must be one of 1,2,4"},
+        {"flag", "2", "", "must be 0 or 1 (or true/false)"},
+    };
+    for (const auto &bad : rejected)
+        EXPECT_EQ(problem(bad.name, bad.value), std::string("s.xml:9: bad value '") + bad.value +
+                                                    "' for parameter '" + bad.name + "' of planner Tiny" +
+                                                    bad.range + ": " + bad.reason);
+    EXPECT_EQ(planner.count(), 7u);
+    EXPECT_EQ(planner.getRange(), 0.5);
+    EXPECT_EQ(planner.level(), 1u);
+    // just inside: both bounds, a whole number written as a real, a listed value, true
+    EXPECT_EQ(problem("count", "100"), "");
+    EXPECT_EQ(planner.count(), 100u);
+    EXPECT_EQ(problem("count", "1e1"), "");
+    EXPECT_EQ(planner.count(), 10u);
+    EXPECT_EQ(problem("count", "0"), "");
+    EXPECT_EQ(planner.count(), 0u);
+    EXPECT_EQ(problem("range", "10"), "");
+    EXPECT_EQ(planner.getRange(), 10.0);
+    EXPECT_EQ(problem("range", "0"), "");
+    EXPECT_EQ(planner.getRange(), 0.0);
+    EXPECT_EQ(problem("level", "4"), "");
+    EXPECT_EQ(planner.level(), 4u);
+    EXPECT_EQ(problem("flag", "true"), "");
+    EXPECT_TRUE(planner.flag());
+    EXPECT_EQ(problem("flag", "0"), "");
+    EXPECT_FALSE(planner.flag());
+}
+
 TEST(DescribeParameters, NameValueAndRangeInNameOrder)
 {
     TinyPlanner planner(plane());
     planner.setRange(2.0);
     const std::vector<std::string> described = describeParameters(planner);
-    ASSERT_EQ(described.size(), 3u);
-    EXPECT_EQ(described[0], "mode = fast");
-    EXPECT_EQ(described[1], "range = 2 (range 0.:1.:10.)");
-    EXPECT_EQ(described[2], "steps = 3");
-    EXPECT_TRUE(contains(described[1], "range"));
+    ASSERT_EQ(described.size(), 6u);
+    EXPECT_EQ(described[0], "count = 7 (range 0:1:100)");
+    EXPECT_EQ(described[1], "flag = 0");
+    EXPECT_EQ(described[2], "level = 1 (range 1,2,4)");
+    EXPECT_EQ(described[3], "mode = fast");
+    EXPECT_EQ(described[4], "range = 2 (range 0.:1.:10.)");
+    EXPECT_EQ(described[5], "steps = 3");
 }

@@ -300,7 +300,9 @@ namespace ompl_mm
         {
             const std::string missing = ROBOTS_DIR + "no_such_robot.urdf";
             EXPECT_EQ(inputErrorOf([&] { RobotModel::fromUrdfFile(missing); }),
-                      missing + ": cannot read URDF file");
+                      missing + ": URDF file not found");
+            EXPECT_EQ(inputErrorOf([&] { RobotModel::fromUrdfFile("/dev/zero"); }),
+                      "/dev/zero: is not a regular file, not a URDF file");
 
             const std::string mesh = ROBOTS_DIR + "bad_mesh.urdf";
             EXPECT_EQ(
