@@ -20,12 +20,15 @@ namespace ompl_mm
 {
     namespace
     {
-        /** The URDF's name for messages and the line of each link and joint element. */
+        /** The URDF's name for messages, the line of each link and joint element, and what each
+            link's element holds as written (urdfdom silently drops a collision it cannot read). */
         struct UrdfSource
         {
             std::string name;
             std::map<std::string, int> linkLines;
             std::map<std::string, int> jointLines;
+            std::map<std::string, std::size_t> collisionElements;  ///< per link
+            std::map<std::string, std::size_t> visualElements;     ///< per link
 
             int jointLine(const std::string &joint) const
             {
@@ -59,7 +62,7 @@ namespace ompl_mm
             urdfdom rejects without saying which joint. */
         UrdfSource indexElements(const std::string &urdf, const std::string &sourceName)
         {
-            UrdfSource source{sourceName, {}, {}};
+            UrdfSource source{sourceName, {}, {}, {}, {}};
             tinyxml2::XMLDocument doc;
             if (doc.Parse(urdf.c_str(), urdf.size()) != tinyxml2::XML_SUCCESS)
                 throw ompl_core::InputError(
@@ -69,9 +72,20 @@ namespace ompl_mm
             if (robot == nullptr)
                 throw ompl_core::InputError(ompl_core::SourceLocation{sourceName, 0},
                                             "invalid URDF: no <robot> element");
+            const auto count = [](const tinyxml2::XMLElement *link, const char *tag)
+            {
+                std::size_t n = 0;
+                for (auto *c = link->FirstChildElement(tag); c != nullptr; c = c->NextSiblingElement(tag))
+                    ++n;
+                return n;
+            };
             for (auto *e = robot->FirstChildElement("link"); e != nullptr; e = e->NextSiblingElement("link"))
                 if (const char *name = e->Attribute("name"))
+                {
                     source.linkLines.emplace(name, e->GetLineNum());
+                    source.collisionElements.emplace(name, count(e, "collision"));
+                    source.visualElements.emplace(name, count(e, "visual"));
+                }
             for (auto *e = robot->FirstChildElement("joint"); e != nullptr;
                  e = e->NextSiblingElement("joint"))
             {
@@ -135,8 +149,21 @@ namespace ompl_mm
             }
         }
 
+        /** The link's collision shapes. A link must not look solid without being so: a <collision>
+            that urdfdom dropped, or a <visual> without any <collision>, is an error. */
         std::vector<LinkShape> toLinkShapes(const urdf::Link &link, const UrdfSource &source)
         {
+            const auto written = [&](const std::map<std::string, std::size_t> &counts)
+            {
+                const auto it = counts.find(link.name);
+                return it == counts.end() ? std::size_t{0} : it->second;
+            };
+            if (link.collision_array.size() < written(source.collisionElements))
+                throw source.linkError(link.name, "a <collision> element could not be read (is its geometry "
+                                                  "complete, with numbers where numbers belong?)");
+            if (link.collision_array.empty() && written(source.visualElements) > 0)
+                throw source.linkError(link.name, "has <visual> but no <collision> geometry, so it would pass "
+                                                  "through obstacles and objects; add a <collision> element");
             std::vector<LinkShape> shapes;
             for (const urdf::CollisionSharedPtr &collision : link.collision_array)
                 shapes.push_back(LinkShape{toShape(*collision->geometry, link.name, source),

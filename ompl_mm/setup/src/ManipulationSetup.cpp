@@ -4,20 +4,32 @@
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 #include "ompl_mm/setup/ProblemCheck.h"
 
+#include <algorithm>
+
 namespace ompl_mm
 {
     namespace
     {
+        /** The scene's robot, which must have collision geometry: a robot without it would pass
+            through everything and every plan would be wrong. */
         RobotModel loadRobot(const Scene &scene)
         {
+            RobotModel robot;
             try
             {
-                return RobotModel::fromUrdfFile(scene.robot.urdfFile);
+                robot = RobotModel::fromUrdfFile(scene.robot.urdfFile);
             }
             catch (const ompl::Exception &e)
             {
                 throw ompl_core::InputError(scene.robot.where, e.what());
             }
+            const std::vector<Link> &links = robot.links();
+            if (std::all_of(links.begin(), links.end(), [](const Link &link) { return link.shapes.empty(); }))
+                throw ompl_core::InputError(scene.robot.where,
+                                            "robot '" + robot.name() + "' (" + scene.robot.urdfFile +
+                                                ") has no collision geometry on any link: it would pass "
+                                                "through everything");
+            return robot;
         }
 
         ManipulationModelPtr makeModel(const Scene &scene)

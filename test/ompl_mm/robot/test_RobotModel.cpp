@@ -341,6 +341,27 @@ namespace ompl_mm
                         "link 'arm': sphere radius must be positive");
         }
 
+        TEST(RobotModel, ALinkThatLooksSolidMustBeSolid)
+        {
+            // urdfdom drops a collision whose geometry it cannot read, leaving the link without it
+            const std::string dropped = oneJointUrdf("revolute", REVOLUTE_LIMITS, "<sphere radius=\"abc\"/>");
+            EXPECT_EQ(inputErrorOf([&] { RobotModel::fromUrdfString(dropped, "bad.urdf"); }),
+                      "bad.urdf:4: link 'arm': a <collision> element could not be read (is its geometry "
+                      "complete, with numbers where numbers belong?)");
+            // a link drawn but not solid
+            std::string visualOnly = oneJointUrdf("revolute", REVOLUTE_LIMITS);
+            const std::string collision = "<collision>";
+            visualOnly.replace(visualOnly.find(collision), collision.size(), "<visual>");
+            const std::string collisionEnd = "</collision>";
+            visualOnly.replace(visualOnly.find(collisionEnd), collisionEnd.size(), "</visual>");
+            EXPECT_EQ(inputErrorOf([&] { RobotModel::fromUrdfString(visualOnly, "bad.urdf"); }),
+                      "bad.urdf:4: link 'arm': has <visual> but no <collision> geometry, so it would pass "
+                      "through obstacles and objects; add a <collision> element");
+            // just inside: a link with neither (a frame, like the base here) is fine
+            EXPECT_EQ(inputErrorOf([&] { RobotModel::fromUrdfString(oneJointUrdf("revolute", REVOLUTE_LIMITS), "ok.urdf"); }),
+                      "");
+        }
+
         TEST(RobotModel, MalformedXmlNamesTheLine)
         {
             // checked before urdfdom sees the text: the line of the unclosed <link>

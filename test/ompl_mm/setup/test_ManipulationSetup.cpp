@@ -277,6 +277,15 @@ TEST(ManipulationSetupInput, MalformedUrdfIsReportedAtTheRobotLineWithTheUrdfsOw
     EXPECT_TRUE(contains(what, "mesh collision geometry is not supported")) << what;
 }
 
+TEST(ManipulationSetupInput, ARobotWithoutCollisionGeometryIsRejectedAtTheRobotLine)
+{
+    // a kinematic model (no <collision> anywhere) would plan through every obstacle
+    Scene scene = mobileBlockedScene();
+    scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/robots/kuka_lwr_dh.urdf";
+    EXPECT_EQ(setupError(scene), scene.robot.where.str() + ": robot 'kuka_lwr_dh' (" + scene.robot.urdfFile +
+                                     ") has no collision geometry on any link: it would pass through everything");
+}
+
 TEST(ManipulationSetupInput, ObjectStartJustWithinTheRestToleranceIsAccepted)
 {
     // 1e-4 is the rest tolerance: 0.9e-4 above the floor rests, 1.1e-4 does not
