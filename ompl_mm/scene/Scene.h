@@ -101,6 +101,14 @@ namespace ompl_mm
         ompl_core::SourceLocation where;  ///< where the scene defines it, for messages
     };
 
+    /** Two robot links never checked against each other (they touch by design). */
+    struct AllowedCollision
+    {
+        std::string link1;                ///< a link of the robot
+        std::string link2;                ///< another link of the robot
+        ompl_core::SourceLocation where;  ///< where the scene allows it, for messages
+    };
+
     /** The robot: a URDF model placed in the world. */
     struct RobotSpec
     {
@@ -108,7 +116,7 @@ namespace ompl_mm
         Eigen::Isometry3d basePose{Eigen::Isometry3d::Identity()};  ///< URDF root frame in the world
         std::string toolLink;                                       ///< link whose origin is the tool point
         Eigen::Vector3d toolOffset{Eigen::Vector3d::Zero()};        ///< tool point in the tool link frame
-        std::vector<std::pair<std::string, std::string>> allowedCollisions;  ///< link pairs never checked
+        std::vector<AllowedCollision> allowedCollisions;             ///< link pairs never checked
         ompl_core::SourceLocation where;  ///< where the scene defines the robot, for messages
     };
 

@@ -206,6 +206,10 @@ expect_bad_edit "standoff smaller than robot and object" standoff_too_small '<pu
 expect_bad_edit "goal that no primitive can reach" no_primitive_moves_it '<push_mobile standoff="0.41"/>' '' \
     'xyz="-0.9 -0.9 *"' "object 'obj3' must move to its goal but no primitive of the scene can move it there"
 
+expect_bad_edit "allow_collision naming an unknown link" allow_unknown_link '<robot urdf="robots/mobile_disc.urdf" tool_link="body"/>' \
+    '<robot urdf="robots/mobile_disc.urdf" tool_link="body">\n    <allow_collision link1="body" link2="wheel"/>\n  </robot>' \
+    '<allow_collision' "allow_collision names link 'wheel', which robot 'mobile_disc' does not have"
+
 expect_bad_option "--seed 0" "--seed" "$scene" --seed 0
 expect_bad_option "--seed -1" "--seed" "$scene" --seed -1
 expect_bad_option "--seed 2^32" "--seed" "$scene" --seed 4294967296

@@ -129,8 +129,16 @@ namespace ompl_mm
 
         // self-collision: links that are neither adjacent nor listed as allowed
         std::vector<std::pair<int, int>> allowed;
-        for (const auto &pair : scene.robot.allowedCollisions)
-            allowed.emplace_back(robot.linkIndex(pair.first), robot.linkIndex(pair.second));
+        const auto linkOf = [&robot](const AllowedCollision &pair, const std::string &name)
+        {
+            for (std::size_t i = 0; i < robot.links().size(); ++i)
+                if (robot.links()[i].name == name)
+                    return static_cast<int>(i);
+            throw ompl_core::InputError(pair.where, "allow_collision names link '" + name + "', which robot '" +
+                                                        robot.name() + "' does not have");
+        };
+        for (const AllowedCollision &pair : scene.robot.allowedCollisions)
+            allowed.emplace_back(linkOf(pair, pair.link1), linkOf(pair, pair.link2));
         for (std::size_t a = 0; a < robotBodies_.size(); ++a)
             for (std::size_t b = a + 1; b < robotBodies_.size(); ++b)
             {
