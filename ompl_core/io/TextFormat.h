@@ -18,6 +18,9 @@ namespace ompl_core
     locale): for planner parameters and properties, where OMPL's toString keeps 6. */
     std::string exactText(double value);
 
+    /** A double as short text for messages (6 significant digits, "C" locale): "0.001", "1e+08". */
+    std::string formatNumber(double value);
+
     /** The names joined by ", " for messages ("known: a, b"), or whenEmpty when there are none. */
     std::string joinedNames(const std::vector<std::string> &names, const std::string &whenEmpty = "none");
 }  // namespace ompl_core

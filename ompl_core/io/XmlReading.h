@@ -107,6 +107,8 @@ namespace ompl_core
         /** One number in [low, high], or fallback when absent.
             @throws InputError when malformed or out of range. */
         double inRange(const char *attribute, double low, double high, double fallback) const;
+        /** One number in [low, high]. @throws InputError when missing, malformed or out of range. */
+        double inRange(const char *attribute, double low, double high) const;
 
         /** One whole number in [low, high] (written as a decimal number), or fallback when absent.
             @throws InputError when malformed, not whole or out of range. */

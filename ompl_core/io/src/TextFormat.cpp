@@ -17,6 +17,14 @@ namespace ompl_core
         return out.str();
     }
 
+    std::string formatNumber(double value)
+    {
+        std::ostringstream out;
+        out.imbue(std::locale::classic());
+        out << value;
+        return out.str();
+    }
+
     std::string jsonQuoted(const std::string &text)
     {
         std::ostringstream out;

@@ -43,14 +43,6 @@ namespace ompl_core
             return false;
         }
 
-        std::string formatNumber(double value)
-        {
-            std::ostringstream out;
-            out.imbue(std::locale::classic());
-            out << value;
-            return out.str();
-        }
-
         bool isBlank(const char *text)
         {
             return std::string(text).find_first_not_of(" \t\r\n") == std::string::npos;
@@ -252,6 +244,12 @@ namespace ompl_core
             fail(attribute, std::string(attribute) + " must be in [" + formatNumber(low) + ", " +
                                 formatNumber(high) + "], got " + text(attribute));
         return value;
+    }
+
+    double XmlElement::inRange(const char *attribute, double low, double high) const
+    {
+        number(attribute);  // present and well-formed
+        return inRange(attribute, low, high, 0.0);
     }
 
     unsigned int XmlElement::count(const char *attribute, unsigned int low, unsigned int high,

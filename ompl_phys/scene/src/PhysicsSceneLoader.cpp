@@ -9,7 +9,9 @@
 #include <sstream>
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/TextFormat.h"
 #include "ompl_core/io/XmlReading.h"
+#include "ompl_phys/scene/PhysicalBounds.h"
 
 namespace ompl_phys
 {
@@ -17,12 +19,29 @@ namespace ompl_phys
     {
 
         /** "xmin xmax ymin ymax" as a box, each max above its min. */
+        /** A length in [MIN_LENGTH, MAX_LENGTH]. */
+        double readLength(const ompl_core::XmlElement &element, const char *attribute)
+        {
+            return element.inRange(attribute, bounds::MIN_LENGTH, bounds::MAX_LENGTH);
+        }
+
+        /** Fails at the attribute unless every coordinate lies within ±MAX_COORDINATE. */
+        void checkCoordinates(const ompl_core::XmlElement &element, const char *attribute,
+                              const std::vector<double> &values)
+        {
+            for (double v : values)
+                if (std::abs(v) > bounds::MAX_COORDINATE)
+                    element.fail(attribute, std::string(attribute) + " must lie within ±" +
+                                                ompl_core::formatNumber(bounds::MAX_COORDINATE) + " m of the origin");
+        }
+
         Eigen::AlignedBox2d readRegion(const ompl_core::XmlElement &element, const char *attribute,
                                        const Eigen::AlignedBox2d &fallback)
         {
             if (!element.has(attribute))
                 return fallback;
             const std::vector<double> v = element.numbers(attribute, 4);
+            checkCoordinates(element, attribute, v);
             if (!(v[0] < v[1] && v[2] < v[3]))
                 element.fail(attribute,
                              std::string(attribute) + " must be \"xmin xmax ymin ymax\" with min < max");
@@ -38,27 +57,31 @@ namespace ompl_phys
                 ompl_core::checkLeaf(element, {"size"});
                 shape.kind = PhysicsShape::Kind::Box;
                 shape.boxSize = element.positiveVector3("size");
+                if (shape.boxSize.minCoeff() < bounds::MIN_LENGTH || shape.boxSize.maxCoeff() > bounds::MAX_LENGTH)
+                    element.fail("size", "box sizes must be in [" + ompl_core::formatNumber(bounds::MIN_LENGTH) +
+                                             ", " + ompl_core::formatNumber(bounds::MAX_LENGTH) + "] m");
             }
             else if (name == "cylinder")
             {
                 ompl_core::checkLeaf(element, {"radius", "length"});
                 shape.kind = PhysicsShape::Kind::Cylinder;
-                shape.radius = element.positive("radius");
-                shape.length = element.positive("length");
+                shape.radius = readLength(element, "radius");
+                shape.length = readLength(element, "length");
             }
             else if (name == "sphere")
             {
                 ompl_core::checkLeaf(element, {"radius"});
                 shape.kind = PhysicsShape::Kind::Sphere;
-                shape.radius = element.positive("radius");
+                shape.radius = readLength(element, "radius");
             }
             else
             {
                 ompl_core::checkLeaf(element, {"corners", "length"});
                 shape.kind = PhysicsShape::Kind::Prism;
                 const std::vector<double> c = element.numbers("corners", 6);
+                checkCoordinates(element, "corners", c);
                 shape.triangle << c[0], c[2], c[4], c[1], c[3], c[5];
-                shape.length = element.positive("length");
+                shape.length = readLength(element, "length");
                 const Eigen::Vector2d a = shape.triangle.col(1) - shape.triangle.col(0);
                 const Eigen::Vector2d b = shape.triangle.col(2) - shape.triangle.col(0);
                 const double area2 = a.x() * b.y() - a.y() * b.x();
@@ -88,6 +111,7 @@ namespace ompl_phys
             void readGoal(const ompl_core::XmlElement &element);
             void checkPlacement(const ompl_core::XmlElement &robot, const ompl_core::XmlElement &goal) const;
             void checkBodies() const;
+            void checkWorkPerControl() const;
 
             PhysicsScene scene_;
             ompl_core::FirstUses names_;
@@ -118,6 +142,7 @@ namespace ompl_phys
             readGoal(byTag["goal"].front());
             checkPlacement(byTag["robot"].front(), byTag["goal"].front());
             checkBodies();
+            checkWorkPerControl();
             return scene_;
         }
 
@@ -126,20 +151,21 @@ namespace ompl_phys
             ompl_core::checkLeaf(element,
                                  {"gravity", "erp", "cfm", "max_contacts", "iterations", "substeps"});
             ContactParameters &c = scene_.contact;
-            c.gravity = element.number("gravity", c.gravity);
+            c.gravity = element.inRange("gravity", -bounds::MAX_GRAVITY, 0.0, c.gravity);
             c.erp = element.inRange("erp", 1e-6, 1.0, c.erp);
             c.cfm = element.inRange("cfm", 0.0, 1.0, c.cfm);
             c.maxContacts = element.count("max_contacts", 1, 16, c.maxContacts);
             c.iterations = element.count("iterations", 1, 1000, c.iterations);
-            c.substeps = element.count("substeps", 1, 1000, c.substeps);
+            c.substeps = element.count("substeps", 1, bounds::MAX_SUBSTEPS_PER_CONTROL, c.substeps);
             c.where = element.where();
         }
 
         void PhysicsSceneParser::readMaterials(const ompl_core::XmlElement &element)
         {
             ompl_core::checkLeaf(element, {"robot_floor", "default"});
-            scene_.materials.robotFloor = element.nonNegative("robot_floor", scene_.materials.robotFloor);
-            scene_.materials.defaultMu = element.nonNegative("default", scene_.materials.defaultMu);
+            scene_.materials.robotFloor =
+                element.inRange("robot_floor", 0.0, bounds::MAX_FRICTION, scene_.materials.robotFloor);
+            scene_.materials.defaultMu = element.inRange("default", 0.0, bounds::MAX_FRICTION, scene_.materials.defaultMu);
             scene_.materials.where = element.where();
         }
 
@@ -151,18 +177,21 @@ namespace ompl_phys
             PlanningLimits &l = scene_.limits;
             l.robotRegion = readRegion(element, "robot_region", l.robotRegion);
             l.bodyRegion = readRegion(element, "body_region", l.bodyRegion);
-            if (element.has("max_robot_speed"))
-                l.maxRobotSpeed = element.positive("max_robot_speed");
-            if (element.has("max_body_speed"))
-                l.maxBodySpeed = element.positive("max_body_speed");
-            if (element.has("max_angular_speed"))
-                l.maxAngularSpeed = element.positive("max_angular_speed");
-            if (element.has("max_force"))
-                l.maxForce = element.positive("max_force");
-            if (element.has("step"))
-                l.stepSize = element.positive("step");
-            l.minControlSteps = element.count("min_steps", 1, 100000, l.minControlSteps);
-            l.maxControlSteps = element.count("max_steps", 1, 100000, l.maxControlSteps);
+            // positive quantities with an upper bound: given, they must be in (0, high]
+            const auto bounded = [&element](const char *attribute, double high, double fallback)
+            {
+                if (!element.has(attribute))
+                    return fallback;
+                element.positive(attribute);
+                return element.inRange(attribute, 0.0, high);
+            };
+            l.maxRobotSpeed = bounded("max_robot_speed", bounds::MAX_SPEED, l.maxRobotSpeed);
+            l.maxBodySpeed = bounded("max_body_speed", bounds::MAX_SPEED, l.maxBodySpeed);
+            l.maxAngularSpeed = bounded("max_angular_speed", bounds::MAX_ANGULAR_SPEED, l.maxAngularSpeed);
+            l.maxForce = bounded("max_force", bounds::MAX_FORCE, l.maxForce);
+            l.stepSize = bounded("step", bounds::MAX_STEP, l.stepSize);
+            l.minControlSteps = element.count("min_steps", 1, bounds::MAX_SUBSTEPS_PER_CONTROL, l.minControlSteps);
+            l.maxControlSteps = element.count("max_steps", 1, bounds::MAX_SUBSTEPS_PER_CONTROL, l.maxControlSteps);
             if (l.maxControlSteps < l.minControlSteps)
                 element.fail("max_steps", "max_steps (" + std::to_string(l.maxControlSteps) +
                                               ") must not be below min_steps (" +
@@ -184,9 +213,10 @@ namespace ompl_phys
             ompl_core::checkLeaf(element, {"name", "radius", "mass", "start"});
             PhysicsRobot &robot = scene_.robot;
             robot.name = element.text("name", robot.name);
-            robot.radius = element.positive("radius");
-            robot.mass = element.positive("mass");
+            robot.radius = readLength(element, "radius");
+            robot.mass = element.inRange("mass", bounds::MIN_MASS, bounds::MAX_MASS);
             robot.start << element.vector2("start"), robot.radius;
+            checkCoordinates(element, "start", {robot.start.x(), robot.start.y()});
             robot.where = element.where();
             names_.emplace(robot.name, robot.where);
         }
@@ -210,7 +240,7 @@ namespace ompl_phys
             if (body.kind == BodyKind::Fixed && element.has("mass"))
                 element.fail("mass", "a fixed body has no mass");
             if (body.kind != BodyKind::Fixed)
-                body.mass = element.positive("mass");
+                body.mass = element.inRange("mass", bounds::MIN_MASS, bounds::MAX_MASS);
 
             std::vector<ompl_core::XmlElement> shapes;
             bool hasOrigin = false;
@@ -268,7 +298,8 @@ namespace ompl_phys
         {
             ompl_core::checkLeaf(element, {"xy", "radius"});
             scene_.goal.centre = element.vector2("xy");
-            scene_.goal.radius = element.positive("radius");
+            checkCoordinates(element, "xy", {scene_.goal.centre.x(), scene_.goal.centre.y()});
+            scene_.goal.radius = readLength(element, "radius");
             scene_.goal.where = element.where();
         }
 
@@ -294,6 +325,20 @@ namespace ompl_phys
                     throw ompl_core::InputError(
                         body.where,
                         "body '" + body.name + "' starts outside the body region (limits body_region)");
+        }
+
+        void PhysicsSceneParser::checkWorkPerControl() const
+        {
+            // a propagation does not poll the planner's time limit: the longest one must be short
+            const unsigned int work = scene_.limits.maxControlSteps * scene_.contact.substeps;
+            if (work > bounds::MAX_SUBSTEPS_PER_CONTROL)
+                throw ompl_core::InputError(
+                    scene_.limits.where.line > 0 ? scene_.limits.where : scene_.contact.where,
+                    "max_steps × substeps = " + std::to_string(scene_.limits.maxControlSteps) + " × " +
+                        std::to_string(scene_.contact.substeps) + " = " + std::to_string(work) +
+                        " ODE sub-steps per control, more than " +
+                        std::to_string(bounds::MAX_SUBSTEPS_PER_CONTROL) +
+                        ": one control's propagation could overrun the planner's time limit");
         }
     }  // namespace
 

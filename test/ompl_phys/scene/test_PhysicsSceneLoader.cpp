@@ -507,46 +507,78 @@ TEST(PhysicsSceneLoader, MaxContactsAndIterationsAreWholeNumbersInTheirRanges)
 
 TEST(PhysicsSceneLoader, SubstepsIsAWholeNumberInItsRange)
 {
-    expectError(simulation(R"(substeps="0")"), 2, "substeps must be a whole number in [1, 1000], got 0");
-    expectError(simulation(R"(substeps="1001")"), 2,
-                "substeps must be a whole number in [1, 1000], got 1001");
+    expectError(simulation(R"(substeps="0")"), 2, "substeps must be a whole number in [1, 2000], got 0");
+    expectError(simulation(R"(substeps="2001")"), 2, "substeps must be a whole number in [1, 2000], got 2001");
     EXPECT_EQ(accepted(simulation(R"(substeps="1")")).contact.substeps, 1u);
-    EXPECT_EQ(accepted(simulation(R"(substeps="1000")")).contact.substeps, 1000u);
+    // with the scene's max_steps of 10, 200 sub-steps make the most work a control may take
+    EXPECT_EQ(accepted(simulation(R"(substeps="200")")).contact.substeps, 200u);
 }
 
-TEST(PhysicsSceneLoader, GravityIsAnyFiniteNumber)
+TEST(PhysicsSceneLoader, WorkPerControlIsBounded)
+{
+    // max_steps × substeps ODE sub-steps run without polling the time limit (a scene with huge values
+    // ran 75 s under a 2 s limit)
+    expectError(simulation(R"(substeps="201")"), 4,
+                "max_steps × substeps = 10 × 201 = 2010 ODE sub-steps per control, more than 2000: one "
+                "control's propagation could overrun the planner's time limit");
+    std::vector<std::string> lines = limits(R"(min_steps="1" max_steps="2000")");
+    lines[1] = R"(  <simulation substeps="1"/>)";
+    EXPECT_EQ(accepted(lines).limits.maxControlSteps, 2000u);
+    lines[1] = R"(  <simulation substeps="2"/>)";
+    expectError(lines, 4, "max_steps × substeps = 2000 × 2 = 4000 ODE sub-steps per control");
+}
+
+TEST(PhysicsSceneLoader, GravityPointsDownAndIsBounded)
 {
     expectError(simulation(R"(gravity="down")"), 2, "malformed number 'down' in attribute 'gravity'");
     expectError(simulation(R"(gravity="-9.81 0")"), 2,
                 "attribute 'gravity' of <simulation> needs 1 value, got 2");
+    // -1e308 aborted ODE
+    expectError(simulation(R"(gravity="-1e308")"), 2, "gravity must be in [-100, 0], got -1e308");
+    expectError(simulation(R"(gravity="-100.001")"), 2, "gravity must be in [-100, 0], got -100.001");
+    expectError(simulation(R"(gravity="0.001")"), 2, "gravity must be in [-100, 0], got 0.001");
     EXPECT_EQ(accepted(simulation(R"(gravity="0")")).contact.gravity, 0.0);
-    EXPECT_EQ(accepted(simulation(R"(gravity="3.7")")).contact.gravity, 3.7);
+    EXPECT_EQ(accepted(simulation(R"(gravity="-100")")).contact.gravity, -100.0);
 }
 
-TEST(PhysicsSceneLoader, FrictionIsNotNegative)
+TEST(PhysicsSceneLoader, FrictionIsInItsRange)
 {
-    expectError(materials(R"(robot_floor="-0.001")"), 3,
-                "attribute 'robot_floor' of <materials> must not be negative, got -0.001");
-    expectError(materials(R"(default="-0.001")"), 3,
-                "attribute 'default' of <materials> must not be negative, got -0.001");
-    const PhysicsScene zero = accepted(materials(R"(robot_floor="0" default="0")"));
-    EXPECT_EQ(zero.materials.robotFloor, 0.0);
-    EXPECT_EQ(zero.materials.defaultMu, 0.0);
-    expectError(materials(R"(rubber="1")"), 3, "unknown attribute 'rubber' on <materials>");
-}
-
-TEST(PhysicsSceneLoader, SpeedsForceAndStepArePositive)
-{
-    for (const char *attribute :
-         {"max_robot_speed", "max_body_speed", "max_angular_speed", "max_force", "step"})
+    for (const char *attribute : {"robot_floor", "default"})
     {
         SCOPED_TRACE(attribute);
         const std::string name = attribute;
-        expectError(limits(name + "=\"0\""), 4,
-                    "attribute '" + name + "' of <limits> must be positive, got 0");
-        expectError(limits(name + "=\"-1\""), 4,
-                    "attribute '" + name + "' of <limits> must be positive, got -1");
+        expectError(materials(name + "=\"-0.001\""), 3, name + " must be in [0, 100], got -0.001");
+        expectError(materials(name + "=\"100.001\""), 3, name + " must be in [0, 100], got 100.001");
+    }
+    const PhysicsScene zero = accepted(materials(R"(robot_floor="0" default="0")"));
+    EXPECT_EQ(zero.materials.robotFloor, 0.0);
+    EXPECT_EQ(zero.materials.defaultMu, 0.0);
+    const PhysicsScene high = accepted(materials(R"(robot_floor="100" default="100")"));
+    EXPECT_EQ(high.materials.robotFloor, 100.0);
+    EXPECT_EQ(high.materials.defaultMu, 100.0);
+    expectError(materials(R"(rubber="1")"), 3, "unknown attribute 'rubber' on <materials>");
+}
+
+TEST(PhysicsSceneLoader, SpeedsForceAndStepArePositiveAndBounded)
+{
+    const struct
+    {
+        const char *attribute, *high, *above;
+    } limitsOf[] = {{"max_robot_speed", "100", "100.001"},
+                    {"max_body_speed", "100", "100.001"},
+                    {"max_angular_speed", "1000", "1000.001"},
+                    {"max_force", "10000", "1e308"},  // 1e308 aborted ODE
+                    {"step", "1", "1.001"}};
+    for (const auto &limit : limitsOf)
+    {
+        SCOPED_TRACE(limit.attribute);
+        const std::string name = limit.attribute;
+        expectError(limits(name + "=\"0\""), 4, "attribute '" + name + "' of <limits> must be positive, got 0");
+        expectError(limits(name + "=\"-1\""), 4, "attribute '" + name + "' of <limits> must be positive, got -1");
+        expectError(limits(name + "=\"" + limit.above + "\""), 4,
+                    name + " must be in [0, " + limit.high + "], got " + limit.above);
         accepted(limits(name + "=\"1e-9\""));
+        accepted(limits(name + "=\"" + limit.high + "\""));
     }
     const PhysicsScene scene = accepted(limits(
         R"(max_robot_speed="1e-9" max_body_speed="2e-9" max_angular_speed="3e-9" max_force="4e-9" step="5e-9")"));
@@ -563,10 +595,10 @@ TEST(PhysicsSceneLoader, ControlStepsInTheirRangeAndMaxNotBelowMin)
     {
         SCOPED_TRACE(attribute);
         const std::string name = attribute;
-        expectError(limits(name + "=\"0\""), 4, name + " must be a whole number in [1, 100000], got 0");
-        expectError(limits(name + "=\"100001\""), 4,
-                    name + " must be a whole number in [1, 100000], got 100001");
-        expectError(limits(name + "=\"1.5\""), 4, name + " must be a whole number in [1, 100000], got 1.5");
+        expectError(limits(name + "=\"0\""), 4, name + " must be a whole number in [1, 2000], got 0");
+        expectError(limits(name + "=\"2001\""), 4,
+                    name + " must be a whole number in [1, 2000], got 2001");
+        expectError(limits(name + "=\"1.5\""), 4, name + " must be a whole number in [1, 2000], got 1.5");
     }
     expectError(limits(R"(min_steps="5" max_steps="4")"), 4, "max_steps (4) must not be below min_steps (5)");
     // the default max_steps (10) is below a min_steps of 11
@@ -574,9 +606,43 @@ TEST(PhysicsSceneLoader, ControlStepsInTheirRangeAndMaxNotBelowMin)
     const PhysicsScene equal = accepted(limits(R"(min_steps="5" max_steps="5")"));
     EXPECT_EQ(equal.limits.minControlSteps, 5u);
     EXPECT_EQ(equal.limits.maxControlSteps, 5u);
-    const PhysicsScene widest = accepted(limits(R"(min_steps="1" max_steps="100000")"));
-    EXPECT_EQ(widest.limits.maxControlSteps, 100000u);
-    EXPECT_EQ(accepted(limits(R"(min_steps="100000" max_steps="100000")")).limits.minControlSteps, 100000u);
+    // with one sub-step per step (the work per control is bounded: WorkPerControlIsBounded)
+    std::vector<std::string> widest = limits(R"(min_steps="1" max_steps="2000")");
+    widest[1] = R"(  <simulation substeps="1"/>)";
+    EXPECT_EQ(accepted(widest).limits.maxControlSteps, 2000u);
+    std::vector<std::string> highest = limits(R"(min_steps="2000" max_steps="2000")");
+    highest[1] = R"(  <simulation substeps="1"/>)";
+    EXPECT_EQ(accepted(highest).limits.minControlSteps, 2000u);
+}
+
+TEST(PhysicsSceneLoader, MassesLengthsAndPositionsAreBoundedForODE)
+{
+    // a mass of 1e200 aborted ODE; sizes and positions far outside a room are not simulated correctly
+    expectError(replaced(6, R"(  <robot name="robot" radius="0.08" mass="1e200" start="-0.8 -0.8"/>)"), 6,
+                "mass must be in [0.001, 1000], got 1e200");
+    expectError(replaced(6, R"(  <robot name="robot" radius="0.08" mass="0.0009" start="-0.8 -0.8"/>)"), 6,
+                "mass must be in [0.001, 1000], got 0.0009");
+    expectError(looseCube("0.6 -0.4 0.1", R"(<box size="0.2 0.2 0.2"/>)", R"(kind="free" mass="1000.1")"), 9,
+                "mass must be in [0.001, 1000], got 1000.1");
+    expectError(replaced(6, R"(  <robot name="robot" radius="100.1" mass="1" start="-0.8 -0.8"/>)"), 6,
+                "radius must be in [0.001, 100], got 100.1");
+    expectError(looseCube("0.6 -0.4 0.1", R"(<box size="0.2 0.0009 0.2"/>)"), 9,
+                "box sizes must be in [0.001, 100] m");
+    expectError(looseCube("0.6 -0.4 0.1", R"(<cylinder radius="0.1" length="100.1"/>)"), 9,
+                "length must be in [0.001, 100], got 100.1");
+    expectError(replaced(15, R"(  <goal xy="1000.1 -0.8" radius="0.1"/>)"), 15,
+                "xy must lie within ±1000 m of the origin");
+    expectError(replaced(4, R"(  <limits robot_region="-1000.1 1 -1 1" body_region="-1.2 1.2 -1.2 1.2"/>)"), 4,
+                "robot_region must lie within ±1000 m of the origin");
+    // just inside
+    const PhysicsScene heavy =
+        accepted(replaced(6, R"(  <robot name="robot" radius="0.001" mass="1000" start="-0.8 -0.8"/>)"));
+    EXPECT_EQ(heavy.robot.mass, 1000.0);
+    EXPECT_EQ(heavy.robot.radius, 0.001);
+    EXPECT_EQ(accepted(replaced(6, R"(  <robot name="robot" radius="0.08" mass="0.001" start="-0.8 -0.8"/>)"))
+                  .robot.mass,
+              0.001);
+    accepted(looseCube("0.6 -0.4 0.1", R"(<box size="0.2 0.001 0.2"/>)"));
 }
 
 TEST(PhysicsSceneLoader, GoalBiasInItsRange)
@@ -668,9 +734,9 @@ TEST(PhysicsSceneLoader, TextInAnElement)
 TEST(PhysicsSceneLoader, RobotValues)
 {
     expectError(replaced(6, R"(  <robot name="robot" radius="0" mass="1" start="-0.8 -0.8"/>)"), 6,
-                "attribute 'radius' of <robot> must be positive, got 0");
+                "radius must be in [0.001, 100], got 0");
     expectError(replaced(6, R"(  <robot name="robot" radius="0.08" mass="0" start="-0.8 -0.8"/>)"), 6,
-                "attribute 'mass' of <robot> must be positive, got 0");
+                "mass must be in [0.001, 1000], got 0");
     expectError(replaced(6, R"(  <robot name="robot" radius="0.08" start="-0.8 -0.8"/>)"), 6,
                 "missing required attribute 'mass' on <robot>");
     expectError(replaced(6, R"(  <robot name="" radius="0.08" mass="1" start="-0.8 -0.8"/>)"), 6,
@@ -678,11 +744,11 @@ TEST(PhysicsSceneLoader, RobotValues)
     expectError(replaced(6, R"(  <robot name="robot" radius="0.08" mass="1" start="-0.8"/>)"), 6,
                 "attribute 'start' of <robot> needs 2 values, got 1");
     const PhysicsScene scene =
-        accepted(replaced(6, R"(  <robot name="r2" radius="1e-9" mass="1e-9" start="-0.8 -0.8"/>)"));
+        accepted(replaced(6, R"(  <robot name="r2" radius="0.001" mass="0.001" start="-0.8 -0.8"/>)"));
     EXPECT_EQ(scene.robot.name, "r2");
-    EXPECT_EQ(scene.robot.radius, 1e-9);
-    EXPECT_EQ(scene.robot.mass, 1e-9);
-    EXPECT_EQ(scene.robot.start.z(), 1e-9);  // on the floor
+    EXPECT_EQ(scene.robot.radius, 0.001);
+    EXPECT_EQ(scene.robot.mass, 0.001);
+    EXPECT_EQ(scene.robot.start.z(), 0.001);  // on the floor
 }
 
 TEST(PhysicsSceneLoader, RobotStartJustInsideAndOutsideItsRegion)
@@ -712,10 +778,10 @@ TEST(PhysicsSceneLoader, GoalJustInsideAndOutsideTheRobotRegion)
 TEST(PhysicsSceneLoader, GoalValues)
 {
     expectError(replaced(15, R"(  <goal xy="0.8 -0.8" radius="0"/>)"), 15,
-                "attribute 'radius' of <goal> must be positive, got 0");
+                "radius must be in [0.001, 100], got 0");
     expectError(replaced(15, R"(  <goal radius="0.1"/>)"), 15, "missing required attribute 'xy' on <goal>");
     expectError(replaced(15, R"(  <goal xy="0.8 *" radius="0.1"/>)"), 15, "'*' (don't care) is not allowed");
-    EXPECT_EQ(accepted(replaced(15, R"(  <goal xy="0.8 -0.8" radius="1e-9"/>)")).goal.radius, 1e-9);
+    EXPECT_EQ(accepted(replaced(15, R"(  <goal xy="0.8 -0.8" radius="0.001"/>)")).goal.radius, 0.001);
 }
 
 TEST(PhysicsSceneLoader, MovableBodiesJustInsideAndOutsideTheBodyRegion)
@@ -743,10 +809,10 @@ TEST(PhysicsSceneLoader, FixedBodyHasNoMassAndMovableBodiesNeedOne)
         7, "a fixed body has no mass");
     const std::string box = R"(<box size="0.2 0.2 0.2"/>)";
     expectError(looseCube("0.6 -0.4 0.1", box, R"(kind="free" mass="0")"), 9,
-                "attribute 'mass' of <body> must be positive, got 0");
+                "mass must be in [0.001, 1000], got 0");
     expectError(looseCube("0.6 -0.4 0.1", box, R"(kind="free")"), 9,
                 "missing required attribute 'mass' on <body>");
-    EXPECT_EQ(accepted(looseCube("0.6 -0.4 0.1", box, R"(kind="free" mass="1e-9")")).bodies[2].mass, 1e-9);
+    EXPECT_EQ(accepted(looseCube("0.6 -0.4 0.1", box, R"(kind="free" mass="0.001")")).bodies[2].mass, 0.001);
     // a constrained body needs one too
     std::vector<std::string> lines = smallSceneLines();
     lines[9] = R"(  <body name="slider" kind="constrained">)";
@@ -782,18 +848,18 @@ TEST(PhysicsSceneLoader, ShapeSizesArePositive)
     expectError(looseCube(at, R"(<box size="0.2 0.2"/>)"), 9,
                 "attribute 'size' of <box> needs 3 values, got 2");
     expectError(looseCube(at, R"(<cylinder radius="0" length="0.2"/>)"), 9,
-                "attribute 'radius' of <cylinder> must be positive, got 0");
+                "radius must be in [0.001, 100], got 0");
     expectError(looseCube(at, R"(<cylinder radius="0.1" length="0"/>)"), 9,
-                "attribute 'length' of <cylinder> must be positive, got 0");
+                "length must be in [0.001, 100], got 0");
     expectError(looseCube(at, R"(<sphere radius="-0.1"/>)"), 9,
-                "attribute 'radius' of <sphere> must be positive, got -0.1");
+                "radius must be in [0.001, 100], got -0.1");
     expectError(looseCube(at, R"(<sphere radius="0.1" length="0.2"/>)"), 9,
                 "unknown attribute 'length' on <sphere> (allowed: radius)");
     expectError(
         replaced(
             8,
             R"(  <body name="wedge" kind="fixed"><prism corners="0.2 0 -0.1 0.17 -0.1 -0.17" length="0"/></body>)"),
-        8, "attribute 'length' of <prism> must be positive, got 0");
+        8, "length must be in [0.001, 100], got 0");
     expectError(
         replaced(
             8,
@@ -801,15 +867,15 @@ TEST(PhysicsSceneLoader, ShapeSizesArePositive)
         8, "attribute 'corners' of <prism> needs 6 values, got 5");
 
     // just inside
-    const PhysicsScene box = accepted(looseCube(at, R"(<box size="1e-9 1e-9 1e-9"/>)"));
-    EXPECT_TRUE(box.bodies[2].shape.boxSize.isApprox(Eigen::Vector3d::Constant(1e-9)));
-    const PhysicsScene cylinder = accepted(looseCube(at, R"(<cylinder radius="1e-9" length="1e-9"/>)"));
+    const PhysicsScene box = accepted(looseCube(at, R"(<box size="0.001 0.001 0.001"/>)"));
+    EXPECT_TRUE(box.bodies[2].shape.boxSize.isApprox(Eigen::Vector3d::Constant(0.001)));
+    const PhysicsScene cylinder = accepted(looseCube(at, R"(<cylinder radius="0.001" length="100"/>)"));
     EXPECT_EQ(cylinder.bodies[2].shape.kind, PhysicsShape::Kind::Cylinder);
-    EXPECT_EQ(cylinder.bodies[2].shape.radius, 1e-9);
-    EXPECT_EQ(cylinder.bodies[2].shape.length, 1e-9);
-    const PhysicsScene sphere = accepted(looseCube(at, R"(<sphere radius="1e-9"/>)"));
+    EXPECT_EQ(cylinder.bodies[2].shape.radius, 0.001);
+    EXPECT_EQ(cylinder.bodies[2].shape.length, 100.0);
+    const PhysicsScene sphere = accepted(looseCube(at, R"(<sphere radius="100"/>)"));
     EXPECT_EQ(sphere.bodies[2].shape.kind, PhysicsShape::Kind::Sphere);
-    EXPECT_EQ(sphere.bodies[2].shape.radius, 1e-9);
+    EXPECT_EQ(sphere.bodies[2].shape.radius, 100.0);
 }
 
 TEST(PhysicsSceneLoader, PrismAreaJustAboveAndBelowTheLimit)
