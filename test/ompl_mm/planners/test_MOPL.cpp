@@ -2,6 +2,7 @@
 // independent planar geometry model (common/PlanarRecheck.h), then checks reproducibility and the
 // input checks of MOPL's parameters.
 #include "common/PlanarRecheck.h"
+#include "ompl_core/run/ParameterSetting.h"
 
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -51,6 +52,43 @@ TEST_P(MOPLOnMobileBlocked, SolvesAndSolutionPassesIndependentRecheck)
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, MOPLOnMobileBlocked, ::testing::Values(1u, 2u, 3u, 4u, 5u, 6u));
+
+namespace
+{
+    /** A connect_step, a seed that solves with it, and twice the iterations that seed needs. */
+    struct ConnectStepCase
+    {
+        const char *connectStep;
+        unsigned int seed;
+        unsigned int iterations;
+    };
+
+    class MOPLAcrossConnectSteps : public ::testing::TestWithParam<ConnectStepCase>
+    {
+    protected:
+        void SetUp() override { ompl::msg::setLogLevel(ompl::msg::LOG_WARN); }
+    };
+}  // namespace
+
+TEST_P(MOPLAcrossConnectSteps, EveryPathPassesTheIndependentRecheck)
+{
+    // connect_step once decided how finely motions were checked (at 1 m a "solved" path drove
+    // through block3); motions are now checked continuously whatever it is
+    const ConnectStepCase &c = GetParam();
+    const Scene scene = mobileBlockedScene();
+    ManipulationSetup setup(scene);
+    ompl_core::applyParameters(*setup.getPlanner(), {{"connect_step", c.connectStep, {}}});
+    setup.mopl()->setSeed(c.seed);
+    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(c.iterations)),
+              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    planarRecheck(*setup.manipulationSpace(), setup.manipulationPath(), scene);
+}
+
+// the ends and the inside of connect_step's declared range, 0.001:0.001:1.
+INSTANTIATE_TEST_SUITE_P(Range, MOPLAcrossConnectSteps,
+                         ::testing::Values(ConnectStepCase{"0.001", 1, 2000}, ConnectStepCase{"0.01", 1, 2000},
+                                           ConnectStepCase{"0.25", 1, 8000}, ConnectStepCase{"0.5", 1, 5000},
+                                           ConnectStepCase{"1", 3, 50000}));
 
 TEST(MOPL, SameSeedGivesSamePath)
 {
