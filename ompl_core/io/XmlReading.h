@@ -127,8 +127,10 @@ namespace ompl_core
             @throws InputError when malformed. */
         OptionalNumber angleOrAny(const char *attribute, OptionalNumber fallback) const;
 
-        /** Whitespace-separated finite numbers; count 0 means any count >= 1.
-            @throws InputError when missing, malformed or of the wrong count. */
+        /** Whitespace-separated finite numbers; count 0 means any count >= 1. A list (any count but
+            1) must hold values within ±MAX_LIST_VALUE, as must vector2(), vector3(), coordinates()
+            and angles3(). @throws InputError when missing, malformed, out of range or of the wrong
+            count. */
         std::vector<double> numbers(const char *attribute, std::size_t count) const;
 
         /** As numbers(), each entry may also be "*" (nullopt). */
@@ -142,8 +144,12 @@ namespace ompl_core
             @throws InputError when malformed or of the wrong count. */
         Eigen::Vector3d vector3(const char *attribute, const Eigen::Vector3d &fallback) const;
 
-        /** Three numbers, each > 0. @throws InputError when missing, malformed or not all positive. */
-        Eigen::Vector3d positiveVector3(const char *attribute) const;
+        /** One length in [MIN_LENGTH, MAX_LENGTH]. @throws InputError when missing, malformed or out
+            of range. */
+        double length(const char *attribute) const;
+        /** Three lengths, each in [MIN_LENGTH, MAX_LENGTH] (a box's size).
+            @throws InputError when missing, malformed, out of range or of the wrong count. */
+        Eigen::Vector3d lengths3(const char *attribute) const;
 
         /** Three angles (radians, or degrees with "deg"), or fallback when absent; in radians.
             @throws InputError when malformed or of the wrong count. */
@@ -163,6 +169,17 @@ namespace ompl_core
         const tinyxml2::XMLElement *element_;
         std::string file_;
     };
+
+    /** The largest magnitude of a value in a list attribute (positions, sizes, axes, angles, joint
+        values: metres and radians; not single numbers such as a time limit): scenes are rooms, and
+        values like 1e308 overflow the geometry. */
+    constexpr double MAX_LIST_VALUE = 1000.0;
+
+    /** The shortest length of a shape (sizes, radii, heights), metres: collision checking and
+        simulation handle lengths from a millimetre to a hundred metres with their default tolerances. */
+    constexpr double MIN_LENGTH = 1e-3;
+    /** The longest length of a shape, metres (see MIN_LENGTH). */
+    constexpr double MAX_LENGTH = 100.0;
 
     /** The largest input file read: 64 MiB, far above any scene or robot description. */
     constexpr std::uintmax_t MAX_INPUT_FILE_BYTES = 64u << 20u;

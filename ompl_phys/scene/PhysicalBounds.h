@@ -1,18 +1,11 @@
 /* The ranges of a physics scene's quantities within which ODE simulates it correctly and a control's
    propagation stays short; the loader rejects anything outside them at its line
-   (docs/scene-format.md, "Physical bounds"). */
+   (docs/scene-format.md, "Physical bounds"). Lengths and positions are bounded for every scene by
+   ompl_core's reader (MIN_LENGTH, MAX_LENGTH, MAX_LIST_VALUE). */
 #pragma once
 
 namespace ompl_phys::bounds
 {
-    /** Sizes, radii and lengths, metres: ODE's contact generation and its default tolerances are
-        made for bodies between a millimetre and tens of metres. */
-    constexpr double MIN_LENGTH = 1e-3;
-    constexpr double MAX_LENGTH = 100.0;
-
-    /** Positions (starts, regions, goal), metres from the origin along each axis. */
-    constexpr double MAX_COORDINATE = 1000.0;
-
     /** Masses, kg: ODE's QuickStep loses accuracy for mass ratios beyond about 1e6, and masses like
         1e200 overflow the inertia tensor and abort ODE. */
     constexpr double MIN_MASS = 1e-3;

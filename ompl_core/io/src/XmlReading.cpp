@@ -313,12 +313,18 @@ namespace ompl_core
         return has(attribute) ? vector3(attribute) : fallback;
     }
 
-    Eigen::Vector3d XmlElement::positiveVector3(const char *attribute) const
+    double XmlElement::length(const char *attribute) const
+    {
+        return inRange(attribute, MIN_LENGTH, MAX_LENGTH);
+    }
+
+    Eigen::Vector3d XmlElement::lengths3(const char *attribute) const
     {
         const Eigen::Vector3d found = vector3(attribute);
-        if ((found.array() <= 0.0).any())
-            fail(attribute, "attribute '" + std::string(attribute) + "' of " + tag() +
-                                " must be positive in every component, got '" + required(attribute) + "'");
+        if (found.minCoeff() < MIN_LENGTH || found.maxCoeff() > MAX_LENGTH)
+            fail(attribute, "attribute '" + std::string(attribute) + "' of " + tag() + " must be in [" +
+                                formatNumber(MIN_LENGTH) + ", " + formatNumber(MAX_LENGTH) +
+                                "] in every component, got '" + required(attribute) + "'");
         return found;
     }
 
@@ -368,6 +374,9 @@ namespace ompl_core
                      "malformed number '" + token + "' in " + what +
                          (angles ? ": expected a finite number of radians, or degrees as in '90deg'"
                                  : ": expected a finite decimal number"));
+            if (count != 1 && std::abs(*parsed) > MAX_LIST_VALUE)
+                fail(attribute, what + " must lie within ±" + formatNumber(MAX_LIST_VALUE) +
+                                    " in every component, got '" + token + "'");
             values.emplace_back(parsed);
         }
         return values;

@@ -24,20 +24,20 @@ namespace ompl_mm
             {
                 ompl_core::checkLeaf(element, {"size"});
                 shape.kind = Shape::Kind::Box;
-                shape.boxSize = element.positiveVector3("size");
+                shape.boxSize = element.lengths3("size");
             }
             else if (element.name() == "cylinder")
             {
                 ompl_core::checkLeaf(element, {"radius", "length"});
                 shape.kind = Shape::Kind::Cylinder;
-                shape.radius = element.positive("radius");
-                shape.length = element.positive("length");
+                shape.radius = element.length("radius");
+                shape.length = element.length("length");
             }
             else
             {
                 ompl_core::checkLeaf(element, {"radius"});
                 shape.kind = Shape::Kind::Sphere;
-                shape.radius = element.positive("radius");
+                shape.radius = element.length("radius");
             }
             return shape;
         }
@@ -205,7 +205,7 @@ namespace ompl_mm
             surface.where = element.where();
             ompl_core::claimName(surfaces_, element, surface.name,
                                  "duplicate surface name '" + surface.name + "'");
-            surface.height = element.number("height");
+            surface.height = element.inRange("height", -ompl_core::MAX_LIST_VALUE, ompl_core::MAX_LIST_VALUE);
             surface.min = element.vector2("min");
             surface.max = element.vector2("max");
             if ((surface.min.array() >= surface.max.array()).any())

@@ -19,29 +19,12 @@ namespace ompl_phys
     {
 
         /** "xmin xmax ymin ymax" as a box, each max above its min. */
-        /** A length in [MIN_LENGTH, MAX_LENGTH]. */
-        double readLength(const ompl_core::XmlElement &element, const char *attribute)
-        {
-            return element.inRange(attribute, bounds::MIN_LENGTH, bounds::MAX_LENGTH);
-        }
-
-        /** Fails at the attribute unless every coordinate lies within ±MAX_COORDINATE. */
-        void checkCoordinates(const ompl_core::XmlElement &element, const char *attribute,
-                              const std::vector<double> &values)
-        {
-            for (double v : values)
-                if (std::abs(v) > bounds::MAX_COORDINATE)
-                    element.fail(attribute, std::string(attribute) + " must lie within ±" +
-                                                ompl_core::formatNumber(bounds::MAX_COORDINATE) + " m of the origin");
-        }
-
         Eigen::AlignedBox2d readRegion(const ompl_core::XmlElement &element, const char *attribute,
                                        const Eigen::AlignedBox2d &fallback)
         {
             if (!element.has(attribute))
                 return fallback;
             const std::vector<double> v = element.numbers(attribute, 4);
-            checkCoordinates(element, attribute, v);
             if (!(v[0] < v[1] && v[2] < v[3]))
                 element.fail(attribute,
                              std::string(attribute) + " must be \"xmin xmax ymin ymax\" with min < max");
@@ -56,32 +39,28 @@ namespace ompl_phys
             {
                 ompl_core::checkLeaf(element, {"size"});
                 shape.kind = PhysicsShape::Kind::Box;
-                shape.boxSize = element.positiveVector3("size");
-                if (shape.boxSize.minCoeff() < bounds::MIN_LENGTH || shape.boxSize.maxCoeff() > bounds::MAX_LENGTH)
-                    element.fail("size", "box sizes must be in [" + ompl_core::formatNumber(bounds::MIN_LENGTH) +
-                                             ", " + ompl_core::formatNumber(bounds::MAX_LENGTH) + "] m");
+                shape.boxSize = element.lengths3("size");
             }
             else if (name == "cylinder")
             {
                 ompl_core::checkLeaf(element, {"radius", "length"});
                 shape.kind = PhysicsShape::Kind::Cylinder;
-                shape.radius = readLength(element, "radius");
-                shape.length = readLength(element, "length");
+                shape.radius = element.length("radius");
+                shape.length = element.length("length");
             }
             else if (name == "sphere")
             {
                 ompl_core::checkLeaf(element, {"radius"});
                 shape.kind = PhysicsShape::Kind::Sphere;
-                shape.radius = readLength(element, "radius");
+                shape.radius = element.length("radius");
             }
             else
             {
                 ompl_core::checkLeaf(element, {"corners", "length"});
                 shape.kind = PhysicsShape::Kind::Prism;
                 const std::vector<double> c = element.numbers("corners", 6);
-                checkCoordinates(element, "corners", c);
                 shape.triangle << c[0], c[2], c[4], c[1], c[3], c[5];
-                shape.length = readLength(element, "length");
+                shape.length = element.length("length");
                 const Eigen::Vector2d a = shape.triangle.col(1) - shape.triangle.col(0);
                 const Eigen::Vector2d b = shape.triangle.col(2) - shape.triangle.col(0);
                 const double area2 = a.x() * b.y() - a.y() * b.x();
@@ -213,10 +192,9 @@ namespace ompl_phys
             ompl_core::checkLeaf(element, {"name", "radius", "mass", "start"});
             PhysicsRobot &robot = scene_.robot;
             robot.name = element.text("name", robot.name);
-            robot.radius = readLength(element, "radius");
+            robot.radius = element.length("radius");
             robot.mass = element.inRange("mass", bounds::MIN_MASS, bounds::MAX_MASS);
             robot.start << element.vector2("start"), robot.radius;
-            checkCoordinates(element, "start", {robot.start.x(), robot.start.y()});
             robot.where = element.where();
             names_.emplace(robot.name, robot.where);
         }
@@ -298,8 +276,7 @@ namespace ompl_phys
         {
             ompl_core::checkLeaf(element, {"xy", "radius"});
             scene_.goal.centre = element.vector2("xy");
-            checkCoordinates(element, "xy", {scene_.goal.centre.x(), scene_.goal.centre.y()});
-            scene_.goal.radius = readLength(element, "radius");
+            scene_.goal.radius = element.length("radius");
             scene_.goal.where = element.where();
         }
 

@@ -458,16 +458,28 @@ TEST(XmlElement, FixedLengthVectors)
               "t.xml:1: missing required attribute 'a' on <r>");
 }
 
-TEST(XmlElement, PositiveVector3NeedsEveryComponentPositive)
+TEST(XmlElement, LengthsLieBetweenAMillimetreAndAHundredMetres)
 {
-    EXPECT_EQ(errorOn("<r s=\"0.2 0 0.2\"/>", [](const XmlElement &r) { r.positiveVector3("s"); }),
-              "t.xml:1: attribute 's' of <r> must be positive in every component, got '0.2 0 0.2'");
-    EXPECT_TRUE(contains(errorOn("<r s=\"-1 1 1\"/>", [](const XmlElement &r) { r.positiveVector3("s"); }),
-                         "must be positive in every component"));
-    EXPECT_TRUE(Doc("<r s=\"1e-300 1e-300 1e-300\"/>")
-                    .root()
-                    .positiveVector3("s")
-                    .isApprox(Eigen::Vector3d::Constant(1e-300)));
+    EXPECT_EQ(errorOn("<r s=\"0.2 0 0.2\"/>", [](const XmlElement &r) { r.lengths3("s"); }),
+              "t.xml:1: attribute 's' of <r> must be in [0.001, 100] in every component, got '0.2 0 0.2'");
+    EXPECT_EQ(errorOn("<r s=\"1 1 100.001\"/>", [](const XmlElement &r) { r.lengths3("s"); }),
+              "t.xml:1: attribute 's' of <r> must be in [0.001, 100] in every component, got '1 1 100.001'");
+    EXPECT_TRUE(Doc("<r s=\"0.001 100 1\"/>").root().lengths3("s").isApprox(Eigen::Vector3d(0.001, 100, 1)));
+    EXPECT_EQ(errorOn("<r l=\"0.0009\"/>", [](const XmlElement &r) { r.length("l"); }),
+              "t.xml:1: l must be in [0.001, 100], got 0.0009");
+    EXPECT_EQ(errorOn("<r/>", [](const XmlElement &r) { r.length("l"); }),
+              "t.xml:1: missing required attribute 'l' on <r>");
+    EXPECT_EQ(Doc("<r l=\"100\"/>").root().length("l"), 100.0);
+}
+
+TEST(XmlElement, ListValuesLieWithinAThousand)
+{
+    // a position of 1e308 overflowed the geometry
+    EXPECT_EQ(errorOn("<r xyz=\"0 1e308 0\"/>", [](const XmlElement &r) { r.vector3("xyz"); }),
+              "t.xml:1: attribute 'xyz' of <r> must lie within ±1000 in every component, got '1e308'");
+    EXPECT_EQ(errorOn("<r v=\"-1000.001\"/>", [](const XmlElement &r) { r.numbers("v", 0); }),
+              "t.xml:1: attribute 'v' of <r> must lie within ±1000 in every component, got '-1000.001'");
+    EXPECT_EQ(Doc("<r xyz=\"-1000 0 1000\"/>").root().vector3("xyz"), Eigen::Vector3d(-1000, 0, 1000));
 }
 
 // --- names and tags used once -----------------------------------------------------------------------------

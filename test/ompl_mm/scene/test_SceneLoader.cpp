@@ -266,12 +266,15 @@ TEST(SceneLoader, WrongNumberOfValues)
                 "attribute 'xyz' of <object> needs 3 values, got 2");
 }
 
-TEST(SceneLoader, NonPositiveSize)
+TEST(SceneLoader, SizesLieBetweenAMillimetreAndAHundredMetres)
 {
     expectError(replaced(5, R"(  <object name="obj1"><cylinder radius="0" length="0.5"/></object>)"), 5,
-                "attribute 'radius' of <cylinder> must be positive");
+                "radius must be in [0.001, 100], got 0");
     expectError(replaced(3, R"(  <obstacle name="block"><box size="1 -1 1"/></obstacle>)"), 3,
-                "attribute 'size' of <box> must be positive");
+                "attribute 'size' of <box> must be in [0.001, 100] in every component, got '1 -1 1'");
+    // a cylinder of length 1e308 was accepted, and plans went through it
+    expectError(replaced(5, R"(  <object name="obj1"><cylinder radius="0.2" length="1e308"/></object>)"), 5,
+                "length must be in [0.001, 100], got 1e308");
 }
 
 TEST(SceneLoader, DuplicateName)

@@ -627,13 +627,13 @@ TEST(PhysicsSceneLoader, MassesLengthsAndPositionsAreBoundedForODE)
     expectError(replaced(6, R"(  <robot name="robot" radius="100.1" mass="1" start="-0.8 -0.8"/>)"), 6,
                 "radius must be in [0.001, 100], got 100.1");
     expectError(looseCube("0.6 -0.4 0.1", R"(<box size="0.2 0.0009 0.2"/>)"), 9,
-                "box sizes must be in [0.001, 100] m");
+                "attribute 'size' of <box> must be in [0.001, 100] in every component, got '0.2 0.0009 0.2'");
     expectError(looseCube("0.6 -0.4 0.1", R"(<cylinder radius="0.1" length="100.1"/>)"), 9,
                 "length must be in [0.001, 100], got 100.1");
     expectError(replaced(15, R"(  <goal xy="1000.1 -0.8" radius="0.1"/>)"), 15,
-                "xy must lie within ±1000 m of the origin");
+                "attribute 'xy' of <goal> must lie within ±1000 in every component, got '1000.1'");
     expectError(replaced(4, R"(  <limits robot_region="-1000.1 1 -1 1" body_region="-1.2 1.2 -1.2 1.2"/>)"), 4,
-                "robot_region must lie within ±1000 m of the origin");
+                "attribute 'robot_region' of <limits> must lie within ±1000 in every component, got '-1000.1'");
     // just inside
     const PhysicsScene heavy =
         accepted(replaced(6, R"(  <robot name="robot" radius="0.001" mass="1000" start="-0.8 -0.8"/>)"));
@@ -840,11 +840,11 @@ TEST(PhysicsSceneLoader, SecondOriginOrPushInABody)
     expectError(lines, 13, "second <push> in body 'slider'");
 }
 
-TEST(PhysicsSceneLoader, ShapeSizesArePositive)
+TEST(PhysicsSceneLoader, ShapeSizesAreInTheirRange)
 {
     const std::string at = "0.6 -0.4 0.1";
     expectError(looseCube(at, R"(<box size="0.2 0 0.2"/>)"), 9,
-                "attribute 'size' of <box> must be positive in every component, got '0.2 0 0.2'");
+                "attribute 'size' of <box> must be in [0.001, 100] in every component, got '0.2 0 0.2'");
     expectError(looseCube(at, R"(<box size="0.2 0.2"/>)"), 9,
                 "attribute 'size' of <box> needs 3 values, got 2");
     expectError(looseCube(at, R"(<cylinder radius="0" length="0.2"/>)"), 9,
