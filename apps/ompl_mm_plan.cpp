@@ -77,9 +77,9 @@ namespace
         if (options.common.planner != scene.planner)
         {
             setup.setPlannerByName(options.common.planner);
-            ompl_core::applyParameters(*setup.getPlanner(), scene.plannerParams);
+            setup.applyParameters(scene.plannerParams);
         }
-        ompl_core::applyParameters(*setup.getPlanner(), options.common.parameterSettings());
+        setup.applyParameters(options.common.parameterSettings());
         if (options.common.listParams)
         {
             options.common.printParameters(*setup.getPlanner());

@@ -47,9 +47,6 @@ namespace ompl_mm
             double contactDistance{0.08};  ///< closer than this, no travel to the object is counted, metres
         };
 
-        /** Most objects the metric handles (it keeps sets of objects as bits). */
-        static constexpr unsigned int MAX_OBJECTS = 64;
-
         /** Weights for a robot: the paper's for arms; for a robot whose moving joints are all
             prismatic the joints are the tool's position, so its robot term is the joint distance
             alone (jointWeight 1, toolWeight and rotationWeight 0), as in the paper's mobile scene. */

@@ -107,10 +107,12 @@ namespace ompl_mm
         /** OMPL's hook: empties both trees and resets the statistics. */
         void clear() override;
         /** OMPL's hook: makes the empty-space planner, the simplifier and empty trees.
-            @throws ompl::Exception without primitives, when undefined_probability +
-            start_value_probability exceeds 1, or without a ManipulationMotionValidator on the
-            space information (ManipulationSetup installs one). */
+            @throws ompl::Exception without primitives, when checkParameters() does, or without a
+            ManipulationMotionValidator on the space information (ManipulationSetup installs one). */
         void setup() override;
+        /** The rules between parameters, which no single parameter's range can state.
+            @throws ompl::Exception when undefined_probability + start_value_probability exceeds 1. */
+        void checkParameters() const;
         /** OMPL's hook: the vertices and edges of both trees (tag 1: start tree, tag 2: goal tree;
             edges point in the direction of motion) and the statistics as properties. */
         void getPlannerData(ompl::base::PlannerData &data) const override;

@@ -150,6 +150,10 @@ namespace ompl_mm
         ompl_core::SourceLocation where;            ///< where the scene lists it, for messages
     };
 
+    /** Most movable objects a scene may hold: the metric keeps sets of objects as the bits of a
+        64-bit word. */
+    constexpr unsigned int MAX_OBJECTS = 64;
+
     /** A multi-modal manipulation problem as plain data: the robot, the fixed world, the movable
         objects with the surfaces they may rest on, the start, the goal and the primitives. A Scene
         is what loadScene() reads from a scene file; code may also fill one directly. Positions are

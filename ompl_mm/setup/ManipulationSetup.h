@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ompl_core/run/ParameterSetting.h"
 #include "ompl_core/run/PlannerRegistry.h"
 #include "ompl_mm/base/ManipulationGoal.h"
 #include "ompl_mm/base/ManipulationValidityChecker.h"
@@ -36,9 +37,14 @@ namespace ompl_mm
         static ompl_core::PlannerRegistry<ManipulationSetup> &plannerRegistry();
 
         /** Makes the registered planner called name and sets it as this setup's planner (without
-            the scene's parameters: apply those with ompl_core::applyParameters if wanted).
+            the scene's parameters: apply those with applyParameters() if wanted).
             @throws ompl_core::InputError for an unknown name. */
         void setPlannerByName(const std::string &name);
+
+        /** Sets the planner's parameters (ompl_core::applyParameters), then checks MOPL's rules
+            between parameters. @throws ompl_core::InputError naming a setting's place: of a bad
+            setting, or of the last setting when the rules between them fail. */
+        void applyParameters(const std::vector<ompl_core::ParameterSetting> &settings);
 
         /** The problem: scene, robot and tool. */
         const ManipulationModelPtr &model() const { return model_; }

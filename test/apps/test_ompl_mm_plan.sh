@@ -210,6 +210,13 @@ expect_bad_edit "allow_collision naming an unknown link" allow_unknown_link '<ro
     '<robot urdf="robots/mobile_disc.urdf" tool_link="body">\n    <allow_collision link1="body" link2="wheel"/>\n  </robot>' \
     '<allow_collision' "allow_collision names link 'wheel', which robot 'mobile_disc' does not have"
 
+expect_bad_edit "probabilities that contradict each other" probabilities_sum '<param name="move_to_object_factor" value="1.0"/>' \
+    '<param name="move_to_object_factor" value="1.0"/>\n    <param name="undefined_probability" value="0.8"/>' \
+    'name="undefined_probability"' "undefined_probability + start_value_probability exceeds 1"
+expect_bad_option "--param probabilities that contradict each other" \
+    "command line option --param: MOPL: undefined_probability + start_value_probability exceeds 1" \
+    "$scene" --param undefined_probability=0.8
+
 expect_bad_option "--seed 0" "--seed" "$scene" --seed 0
 expect_bad_option "--seed -1" "--seed" "$scene" --seed -1
 expect_bad_option "--seed 2^32" "--seed" "$scene" --seed 4294967296

@@ -147,13 +147,18 @@ namespace ompl_mm
         ob::Planner::setup();
         if (primitives_.empty())
             throw ompl::Exception(getName(), "has no primitives: call setPrimitives() first");
-        if (probabilities_.undefined + probabilities_.startValue > 1.0)
-            throw ompl::Exception(getName(), "undefined_probability + start_value_probability exceeds 1");
+        checkParameters();
         esp_ = std::make_unique<EmptySpacePlanner>(space_, primitives_);
         motions_ = std::make_unique<ManipulationMotionValidator>(si_, primitives_);
         simplifier_ = std::make_unique<ManipulationSimplifier>(si_);
         startTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), true);
         goalTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), false);
+    }
+
+    void MOPL::checkParameters() const
+    {
+        if (probabilities_.undefined + probabilities_.startValue > 1.0)
+            throw ompl::Exception(getName(), "undefined_probability + start_value_probability exceeds 1");
     }
 
     void MOPL::clear()

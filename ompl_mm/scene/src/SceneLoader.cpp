@@ -237,6 +237,8 @@ namespace ompl_mm
 
         void SceneParser::readObject(const ompl_core::XmlElement &element)
         {
+            if (scene_.objects.size() == MAX_OBJECTS)
+                element.fail("a scene holds at most " + std::to_string(MAX_OBJECTS) + " movable objects");
             MovableObject object;
             object.name = claimBodyName(element);
             object.where = element.where();

@@ -54,7 +54,23 @@ namespace ompl_mm
         si_->setMotionValidator(std::make_shared<ManipulationMotionValidator>(si_, primitives_));
         ProblemCheck(*space_).checkGoal(getProblemDefinition()->getStartState(0), primitives_);
         setPlannerByName(scene.planner);
-        ompl_core::applyParameters(*planner_, scene.plannerParams);
+        applyParameters(scene.plannerParams);
+    }
+
+    void ManipulationSetup::applyParameters(const std::vector<ompl_core::ParameterSetting> &settings)
+    {
+        ompl_core::applyParameters(*planner_, settings);
+        const std::shared_ptr<MOPL> planner = mopl();
+        if (!planner || settings.empty())
+            return;
+        try
+        {
+            planner->checkParameters();
+        }
+        catch (const ompl::Exception &e)
+        {
+            throw ompl_core::InputError(settings.back().where, e.what());
+        }
     }
 
     ompl_core::PlannerRegistry<ManipulationSetup> &ManipulationSetup::plannerRegistry()

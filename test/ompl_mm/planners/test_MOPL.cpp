@@ -303,6 +303,28 @@ TEST(MOPLParameters, UndefinedAndStartValueProbabilitiesMayNotSumAboveOne)
     EXPECT_EQ(setupError("1", "1"), "MOPL: undefined_probability + start_value_probability exceeds 1");
 }
 
+TEST(MOPLParameters, AContradictionBetweenSettingsIsNamedAtTheLastSetting)
+{
+    // each probability is in range; together they are not: the message names where the settings
+    // came from, so a scene's <planner> line or the command line option is found at once
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    ManipulationSetup setup(mobileBlockedScene());
+    const ompl_core::SourceLocation first{"s.xml", 70}, last{"s.xml", 71};
+    EXPECT_EQ(ompl_core::test::inputErrorOf([&]
+                           {
+                               setup.applyParameters({{"undefined_probability", "0.8", first},
+                                                      {"start_value_probability", "0.3", last}});
+                           }),
+              "s.xml:71: MOPL: undefined_probability + start_value_probability exceeds 1");
+    // just inside, in either order
+    EXPECT_EQ(ompl_core::test::inputErrorOf([&]
+                           {
+                               setup.applyParameters({{"start_value_probability", "0.2", first},
+                                                      {"undefined_probability", "0.8", last}});
+                           }),
+              "");
+}
+
 TEST(MOPLParameters, SetupWithoutPrimitivesThrows)
 {
     // a planner made without primitives (or emptied) cannot plan

@@ -277,6 +277,22 @@ TEST(SceneLoader, SizesLieBetweenAMillimetreAndAHundredMetres)
                 "length must be in [0.001, 100], got 1e308");
 }
 
+TEST(SceneLoader, AtMostSixtyFourObjects)
+{
+    // the metric keeps sets of objects as bits of a 64-bit word: the 65th object is named at its line
+    const auto withObjects = [](unsigned int extra)
+    {
+        std::vector<std::string> lines = validLines();
+        for (unsigned int k = 0; k < extra; ++k)
+            lines.insert(lines.begin() + 5, R"(  <object name="extra)" + std::to_string(k) +
+                                                 R"("><cylinder radius="0.2" length="0.5"/></object>)");
+        return lines;
+    };
+    expectError(withObjects(64), 69, "a scene holds at most 64 movable objects");
+    // just inside: 64 objects load (the extra ones have no start, which is the next error)
+    expectError(withObjects(63), 6, "object 'extra62' has no start");
+}
+
 TEST(SceneLoader, DuplicateName)
 {
     expectError(replaced(5, R"(  <object name="block"><cylinder radius="0.2" length="0.5"/></object>)"), 5,
