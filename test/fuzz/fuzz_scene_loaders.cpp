@@ -1,7 +1,7 @@
 // A fuzz target for the two scene loaders: any input either loads or is rejected with an
 // ompl_core::InputError; anything else (another exception, a crash, a sanitizer report, a hang) is a
-// defect. Built with libFuzzer when the compiler is clang (OMPL_MM_FUZZ=ON), otherwise linked with
-// scene_fuzz_driver.cpp, which mutates the shipped scenes for a fixed time (see docs/architecture.md).
+// defect. Linked with scene_fuzz_driver.cpp, which mutates the shipped scenes for a fixed time; its
+// entry point is libFuzzer's (see docs/architecture.md).
 #include "ompl_core/io/InputError.h"
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
