@@ -55,7 +55,7 @@ def mutate(text, rng):
                 del lines[i]
             else:
                 lines.insert(i, lines[i])
-            return "\n".join(lines), f"line {i + 1}: element {kind}d"
+            return "\n".join(lines), f"line {i + 1}: element {'dropped' if kind == 'drop' else 'duplicated'}"
     if kind in ("misspell", "value"):
         spots = [(i, m) for i, line in enumerate(lines) for m in ATTRIBUTE.finditer(line)]
         if spots:
