@@ -2,8 +2,8 @@
 """Mutation testing of the test suite: applies each mutant of mutants.txt (one small deliberate
 bug in an important line) to a scratch copy of the sources, one at a time, rebuilds incrementally,
 runs the suite and counts the mutant killed when a test fails. Prints the score (killed / total)
-and lists the survivors: lines no test guards. Not part of CI (it takes about a minute per
-mutant); run it before closing any issue that changes core code. See docs/architecture.md.
+and lists the survivors: lines no test guards. Not part of CI (a mutant takes from seconds to a
+minute and a half); run it before closing any issue that changes core code. See docs/architecture.md.
 
 Usage:
   test/mutation/run_mutants.py [--only ID[,ID...]] [--work DIR] [--jobs N] [--report FILE]
