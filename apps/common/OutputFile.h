@@ -23,8 +23,8 @@ namespace apps
 
     /** An output file, created when constructed so that a bad path fails before planning. A regular
         file is written under a temporary name beside it and renamed over it by commit(), so a failed
-        write leaves the old file (or none) in place; a device or pipe (/dev/stdout) is written
-        directly. An empty path is no file: isOpen() is false. */
+        write leaves the old file (or none) in place; a device or pipe (/dev/stdout) and a symbolic
+        link are written directly. An empty path is no file: isOpen() is false. */
     class OutputFile
     {
     public:
@@ -33,10 +33,12 @@ namespace apps
         {
             if (path_.empty())
                 return;
+            // a device, a pipe or a symbolic link is written in place: a rename would replace it
             std::error_code error;
-            const bool special = std::filesystem::exists(path_, error) &&
-                                 !std::filesystem::is_regular_file(path_, error);
-            writing_ = special ? path_ : path_ + ".tmp" + std::to_string(::getpid());
+            const bool inPlace =
+                std::filesystem::is_symlink(std::filesystem::symlink_status(path_, error)) ||
+                (std::filesystem::exists(path_, error) && !std::filesystem::is_regular_file(path_, error));
+            writing_ = inPlace ? path_ : path_ + ".tmp" + std::to_string(::getpid());
             out_.open(writing_);
             if (!out_)
                 throw ompl_core::InputError(path_ + ": cannot write file");

@@ -269,5 +269,18 @@ check_interrupt "$walled"
 check_output_failure "$scene" --seed 1
 check_no_temporary_files
 
+# an output named through a symbolic link is written where the link points; the link stays
+target_json=$scratch/linked_target.json
+rm -f "$target_json" "$scratch/link.json"
+echo stale >"$target_json"
+ln -s "$target_json" "$scratch/link.json"
+run through_link "$scene" --seed 1 --json "$scratch/link.json"
+if [ $status -eq 0 ] && [ -L "$scratch/link.json" ] && python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$target_json" 2>/dev/null; then
+    ok "--json through a symbolic link writes its target and keeps the link"
+else
+    not_ok "--json through a symbolic link writes its target and keeps the link" "exit $status" \
+        "link: $(ls -l "$scratch/link.json" 2>&1)" "target: $(head -c 200 "$target_json")"
+fi
+
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]
