@@ -101,8 +101,9 @@ namespace
         printSummary(scene, setup, options);
         if (json.isOpen())
         {
-            ompl_core::writeRunJson(json.stream(), ompl_mm::manipulationRunResult(
-                                                       options.common.describe(scene.name, timeLimit), setup));
+            ompl_core::writeRunJson(
+                json.stream(),
+                ompl_mm::manipulationRunResult(options.common.describe(scene.name, timeLimit), setup));
             json.commit();
         }
         if (svg.isOpen())

@@ -104,8 +104,9 @@ namespace
         printSummary(setup, options, result);
         if (json.isOpen())
         {
-            ompl_core::writeRunJson(json.stream(), ompl_phys::physicsRunResult(
-                                                       options.common.describe(scene.name, timeLimit), setup, result));
+            ompl_core::writeRunJson(
+                json.stream(),
+                ompl_phys::physicsRunResult(options.common.describe(scene.name, timeLimit), setup, result));
             json.commit();
         }
         if (svg.isOpen())

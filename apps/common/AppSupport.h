@@ -87,7 +87,7 @@ namespace apps
             "time-limit", po::value(&options.timeLimit),
             "planning time limit in seconds (default: the scene's; inf or above 1e8: none; Ctrl-C ends a run "
             "early and still writes its results)")("json", po::value(&options.json),
-                                                                     "write the result as JSON to this file")(
+                                                   "write the result as JSON to this file")(
             "svg", po::value(&options.svg), "write a top-down picture of the plan to this SVG file")(
             "verbose,v", po::bool_switch(&options.verbose), "print OMPL's informational messages")(
             "list-params", po::bool_switch(&options.listParams),

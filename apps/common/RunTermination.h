@@ -4,8 +4,8 @@
 #include <ompl/base/PlannerTerminationCondition.h>
 
 #include <atomic>
-#include <csignal>
 #include <cmath>
+#include <csignal>
 
 namespace apps
 {
@@ -17,7 +17,10 @@ namespace apps
     {
         inline std::atomic<bool> interrupted{false};
 
-        inline void onInterrupt(int) { interrupted = true; }
+        inline void onInterrupt(int)
+        {
+            interrupted = true;
+        }
     }  // namespace detail
 
     /** The condition that ends planning: the time limit in seconds (none when infinite or above
@@ -29,7 +32,7 @@ namespace apps
         const ompl::base::PlannerTerminationCondition interrupt([] { return detail::interrupted.load(); });
         if (!std::isfinite(seconds) || seconds > LONGEST_TIME_LIMIT)
             return interrupt;
-        return ompl::base::plannerOrTerminationCondition(ompl::base::timedPlannerTerminationCondition(seconds),
-                                                         interrupt);
+        return ompl::base::plannerOrTerminationCondition(
+            ompl::base::timedPlannerTerminationCondition(seconds), interrupt);
     }
 }  // namespace apps

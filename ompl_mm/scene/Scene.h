@@ -116,7 +116,7 @@ namespace ompl_mm
         Eigen::Isometry3d basePose{Eigen::Isometry3d::Identity()};  ///< URDF root frame in the world
         std::string toolLink;                                       ///< link whose origin is the tool point
         Eigen::Vector3d toolOffset{Eigen::Vector3d::Zero()};        ///< tool point in the tool link frame
-        std::vector<AllowedCollision> allowedCollisions;             ///< link pairs never checked
+        std::vector<AllowedCollision> allowedCollisions;            ///< link pairs never checked
         ompl_core::SourceLocation where;  ///< where the scene defines the robot, for messages
     };
 

@@ -28,7 +28,8 @@ namespace
     /** One mutant of corpus[k]: a few random edits, sometimes spliced with another file. */
     std::string mutant(const std::vector<std::string> &corpus, std::mt19937 &rng)
     {
-        const auto pick = [&rng](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
+        const auto pick = [&rng](std::size_t n)
+        { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
         std::string text = corpus[pick(corpus.size())];
         const std::size_t edits = 1 + pick(4);
         for (std::size_t e = 0; e < edits && !text.empty(); ++e)
@@ -92,6 +93,7 @@ int main(int argc, char **argv)
         LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t *>(text.data()), text.size());
         ++inputs;
     }
-    std::cout << "scene_fuzz_driver: " << inputs << " inputs, every one loaded or rejected with an InputError\n";
+    std::cout << "scene_fuzz_driver: " << inputs
+              << " inputs, every one loaded or rejected with an InputError\n";
     return 0;
 }

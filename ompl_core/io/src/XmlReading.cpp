@@ -392,9 +392,9 @@ namespace ompl_core
             throw InputError(SourceLocation{path, 0}, "is not a regular file, not a " + what);
         const std::uintmax_t size = std::filesystem::file_size(path, error);
         if (!error && size > MAX_INPUT_FILE_BYTES)
-            throw InputError(SourceLocation{path, 0},
-                             what + " of " + std::to_string(size) + " bytes is larger than the limit of " +
-                                 std::to_string(MAX_INPUT_FILE_BYTES) + " bytes");
+            throw InputError(SourceLocation{path, 0}, what + " of " + std::to_string(size) +
+                                                          " bytes is larger than the limit of " +
+                                                          std::to_string(MAX_INPUT_FILE_BYTES) + " bytes");
         std::ifstream in(path, std::ios::binary);
         if (!in)
             throw InputError(SourceLocation{path, 0}, std::filesystem::exists(path, error)

@@ -96,7 +96,8 @@ namespace ompl_core
             const std::vector<std::string> bounds = split(range, ':');
             if (bounds.size() == 2 || bounds.size() == 3)
             {
-                const std::optional<double> low = parseNumber(bounds.front()), high = parseNumber(bounds.back());
+                const std::optional<double> low = parseNumber(bounds.front()),
+                                            high = parseNumber(bounds.back());
                 if (low && high && (*number < *low || *number > *high))
                     return "out of range";
             }

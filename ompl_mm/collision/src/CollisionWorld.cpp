@@ -134,8 +134,9 @@ namespace ompl_mm
             for (std::size_t i = 0; i < robot.links().size(); ++i)
                 if (robot.links()[i].name == name)
                     return static_cast<int>(i);
-            throw ompl_core::InputError(pair.where, "allow_collision names link '" + name + "', which robot '" +
-                                                        robot.name() + "' does not have");
+            throw ompl_core::InputError(pair.where, "allow_collision names link '" + name +
+                                                        "', which robot '" + robot.name() +
+                                                        "' does not have");
         };
         for (const AllowedCollision &pair : scene.robot.allowedCollisions)
             allowed.emplace_back(linkOf(pair, pair.link1), linkOf(pair, pair.link2));

@@ -84,11 +84,9 @@ namespace ompl_mm
                 "information (ManipulationSetup installs one)");
     }
 
-    ManipulationSimplifier::Outcome ManipulationSimplifier::simplify(ManipulationPath &path,
-                                                                     unsigned int windowAttempts,
-                                                                     ompl::RNG &rng,
-                                                                     const ompl::base::Goal *goal,
-                                                                     const ompl::base::PlannerTerminationCondition &ptc) const
+    ManipulationSimplifier::Outcome ManipulationSimplifier::simplify(
+        ManipulationPath &path, unsigned int windowAttempts, ompl::RNG &rng, const ompl::base::Goal *goal,
+        const ompl::base::PlannerTerminationCondition &ptc) const
     {
         Outcome outcome;
         path.removeRepeatedStates();

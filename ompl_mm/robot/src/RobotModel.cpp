@@ -159,11 +159,13 @@ namespace ompl_mm
                 return it == counts.end() ? std::size_t{0} : it->second;
             };
             if (link.collision_array.size() < written(source.collisionElements))
-                throw source.linkError(link.name, "a <collision> element could not be read (is its geometry "
-                                                  "complete, with numbers where numbers belong?)");
+                throw source.linkError(link.name,
+                                       "a <collision> element could not be read (is its geometry "
+                                       "complete, with numbers where numbers belong?)");
             if (link.collision_array.empty() && written(source.visualElements) > 0)
-                throw source.linkError(link.name, "has <visual> but no <collision> geometry, so it would pass "
-                                                  "through obstacles and objects; add a <collision> element");
+                throw source.linkError(link.name,
+                                       "has <visual> but no <collision> geometry, so it would pass "
+                                       "through obstacles and objects; add a <collision> element");
             std::vector<LinkShape> shapes;
             for (const urdf::CollisionSharedPtr &collision : link.collision_array)
                 shapes.push_back(LinkShape{toShape(*collision->geometry, link.name, source),

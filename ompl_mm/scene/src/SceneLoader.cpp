@@ -140,7 +140,8 @@ namespace ompl_mm
                 if (child.name() == "allow_collision")
                 {
                     ompl_core::checkLeaf(child, {"link1", "link2"});
-                    robot.allowedCollisions.push_back({child.text("link1"), child.text("link2"), child.where()});
+                    robot.allowedCollisions.push_back(
+                        {child.text("link1"), child.text("link2"), child.where()});
                     continue;
                 }
                 ompl_core::claimOnce(singles, child, element);

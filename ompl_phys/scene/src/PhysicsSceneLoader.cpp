@@ -144,7 +144,8 @@ namespace ompl_phys
             ompl_core::checkLeaf(element, {"robot_floor", "default"});
             scene_.materials.robotFloor =
                 element.inRange("robot_floor", 0.0, bounds::MAX_FRICTION, scene_.materials.robotFloor);
-            scene_.materials.defaultMu = element.inRange("default", 0.0, bounds::MAX_FRICTION, scene_.materials.defaultMu);
+            scene_.materials.defaultMu =
+                element.inRange("default", 0.0, bounds::MAX_FRICTION, scene_.materials.defaultMu);
             scene_.materials.where = element.where();
         }
 
@@ -169,8 +170,10 @@ namespace ompl_phys
             l.maxAngularSpeed = bounded("max_angular_speed", bounds::MAX_ANGULAR_SPEED, l.maxAngularSpeed);
             l.maxForce = bounded("max_force", bounds::MAX_FORCE, l.maxForce);
             l.stepSize = bounded("step", bounds::MAX_STEP, l.stepSize);
-            l.minControlSteps = element.count("min_steps", 1, bounds::MAX_SUBSTEPS_PER_CONTROL, l.minControlSteps);
-            l.maxControlSteps = element.count("max_steps", 1, bounds::MAX_SUBSTEPS_PER_CONTROL, l.maxControlSteps);
+            l.minControlSteps =
+                element.count("min_steps", 1, bounds::MAX_SUBSTEPS_PER_CONTROL, l.minControlSteps);
+            l.maxControlSteps =
+                element.count("max_steps", 1, bounds::MAX_SUBSTEPS_PER_CONTROL, l.maxControlSteps);
             if (l.maxControlSteps < l.minControlSteps)
                 element.fail("max_steps", "max_steps (" + std::to_string(l.maxControlSteps) +
                                               ") must not be below min_steps (" +

@@ -193,7 +193,9 @@ TEST(ReadInputFile, RejectsDevicesAndHugeFilesBeforeReading)
               "/dev/zero: is not a regular file, not a scene file");
     // a sparse file just over the limit costs no disk; one at the limit is read
     const std::filesystem::path file = scratchDirectory() / "huge.xml";
-    { std::ofstream(file) << "<r/>"; }
+    {
+        std::ofstream(file) << "<r/>";
+    }
     std::filesystem::resize_file(file, MAX_INPUT_FILE_BYTES + 1);
     EXPECT_EQ(inputErrorOf([&] { readInputFile(file.string(), "scene file"); }),
               file.string() + ": scene file of 67108865 bytes is larger than the limit of 67108864 bytes");

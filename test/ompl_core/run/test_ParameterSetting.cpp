@@ -148,11 +148,12 @@ TEST(ApplyParameters, SetsEachInOrderAndLaterSettingsWin)
 TEST(ApplyParameters, UnknownNameListsTheKnownOnes)
 {
     TinyPlanner planner(plane());
-    EXPECT_EQ(inputErrorOf(
-                  [&] {
-                      applyParameters(planner, {at(1, "range", "1"), at(4, "rnage", "2")});
-                  }),
-              "s.xml:4: unknown parameter 'rnage' of planner Tiny (known: count, flag, level, mode, range, steps)");
+    EXPECT_EQ(
+        inputErrorOf(
+            [&] {
+                applyParameters(planner, {at(1, "range", "1"), at(4, "rnage", "2")});
+            }),
+        "s.xml:4: unknown parameter 'rnage' of planner Tiny (known: count, flag, level, mode, range, steps)");
     // the settings before it were applied
     EXPECT_EQ(planner.getRange(), 1.0);
     // from the command line: no line

@@ -86,9 +86,9 @@ TEST_P(MOPLAcrossConnectSteps, EveryPathPassesTheIndependentRecheck)
 
 // the ends and the inside of connect_step's declared range, 0.001:0.001:1.
 INSTANTIATE_TEST_SUITE_P(Range, MOPLAcrossConnectSteps,
-                         ::testing::Values(ConnectStepCase{"0.001", 1, 2000}, ConnectStepCase{"0.01", 1, 2000},
-                                           ConnectStepCase{"0.25", 1, 8000}, ConnectStepCase{"0.5", 1, 5000},
-                                           ConnectStepCase{"1", 3, 50000}));
+                         ::testing::Values(ConnectStepCase{"0.001", 1, 2000},
+                                           ConnectStepCase{"0.01", 1, 2000}, ConnectStepCase{"0.25", 1, 8000},
+                                           ConnectStepCase{"0.5", 1, 5000}, ConnectStepCase{"1", 3, 50000}));
 
 TEST(MOPL, SameSeedGivesSamePath)
 {
@@ -310,18 +310,20 @@ TEST(MOPLParameters, AContradictionBetweenSettingsIsNamedAtTheLastSetting)
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     ManipulationSetup setup(mobileBlockedScene());
     const ompl_core::SourceLocation first{"s.xml", 70}, last{"s.xml", 71};
-    EXPECT_EQ(ompl_core::test::inputErrorOf([&]
-                           {
-                               setup.applyParameters({{"undefined_probability", "0.8", first},
-                                                      {"start_value_probability", "0.3", last}});
-                           }),
+    EXPECT_EQ(ompl_core::test::inputErrorOf(
+                  [&]
+                  {
+                      setup.applyParameters({{"undefined_probability", "0.8", first},
+                                             {"start_value_probability", "0.3", last}});
+                  }),
               "s.xml:71: MOPL: undefined_probability + start_value_probability exceeds 1");
     // just inside, in either order
-    EXPECT_EQ(ompl_core::test::inputErrorOf([&]
-                           {
-                               setup.applyParameters({{"start_value_probability", "0.2", first},
-                                                      {"undefined_probability", "0.8", last}});
-                           }),
+    EXPECT_EQ(ompl_core::test::inputErrorOf(
+                  [&]
+                  {
+                      setup.applyParameters({{"start_value_probability", "0.2", first},
+                                             {"undefined_probability", "0.8", last}});
+                  }),
               "");
 }
 

@@ -358,8 +358,11 @@ namespace ompl_mm
                       "bad.urdf:4: link 'arm': has <visual> but no <collision> geometry, so it would pass "
                       "through obstacles and objects; add a <collision> element");
             // just inside: a link with neither (a frame, like the base here) is fine
-            EXPECT_EQ(inputErrorOf([&] { RobotModel::fromUrdfString(oneJointUrdf("revolute", REVOLUTE_LIMITS), "ok.urdf"); }),
-                      "");
+            EXPECT_EQ(
+                inputErrorOf(
+                    [&]
+                    { RobotModel::fromUrdfString(oneJointUrdf("revolute", REVOLUTE_LIMITS), "ok.urdf"); }),
+                "");
         }
 
         TEST(RobotModel, MalformedXmlNamesTheLine)

@@ -285,7 +285,7 @@ TEST(SceneLoader, AtMostSixtyFourObjects)
         std::vector<std::string> lines = validLines();
         for (unsigned int k = 0; k < extra; ++k)
             lines.insert(lines.begin() + 5, R"(  <object name="extra)" + std::to_string(k) +
-                                                 R"("><cylinder radius="0.2" length="0.5"/></object>)");
+                                                R"("><cylinder radius="0.2" length="0.5"/></object>)");
         return lines;
     };
     expectError(withObjects(64), 69, "a scene holds at most 64 movable objects");

@@ -282,8 +282,9 @@ TEST(ManipulationSetupInput, ARobotWithoutCollisionGeometryIsRejectedAtTheRobotL
     // a kinematic model (no <collision> anywhere) would plan through every obstacle
     Scene scene = mobileBlockedScene();
     scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/robots/kuka_lwr_dh.urdf";
-    EXPECT_EQ(setupError(scene), scene.robot.where.str() + ": robot 'kuka_lwr_dh' (" + scene.robot.urdfFile +
-                                     ") has no collision geometry on any link: it would pass through everything");
+    EXPECT_EQ(setupError(scene),
+              scene.robot.where.str() + ": robot 'kuka_lwr_dh' (" + scene.robot.urdfFile +
+                  ") has no collision geometry on any link: it would pass through everything");
 }
 
 TEST(ManipulationSetupInput, ObjectStartJustWithinTheRestToleranceIsAccepted)
@@ -302,7 +303,8 @@ TEST(ManipulationSetupInput, AllowedCollisionWithAnUnknownLinkIsNamed)
     // an <allow_collision> pair must name links of the robot
     Scene scene = mobileBlockedScene();
     scene.robot.allowedCollisions.push_back({"body", "gripper", ompl_core::SourceLocation{"s.xml", 12}});
-    EXPECT_EQ(setupError(scene), "s.xml:12: allow_collision names link 'gripper', which robot 'mobile_disc' does not have");
+    EXPECT_EQ(setupError(scene),
+              "s.xml:12: allow_collision names link 'gripper', which robot 'mobile_disc' does not have");
 }
 
 TEST(ManipulationSetup, ConnectStepLongerThanAnObjectsYawRangeIsAccepted)

@@ -508,7 +508,8 @@ TEST(PhysicsSceneLoader, MaxContactsAndIterationsAreWholeNumbersInTheirRanges)
 TEST(PhysicsSceneLoader, SubstepsIsAWholeNumberInItsRange)
 {
     expectError(simulation(R"(substeps="0")"), 2, "substeps must be a whole number in [1, 2000], got 0");
-    expectError(simulation(R"(substeps="2001")"), 2, "substeps must be a whole number in [1, 2000], got 2001");
+    expectError(simulation(R"(substeps="2001")"), 2,
+                "substeps must be a whole number in [1, 2000], got 2001");
     EXPECT_EQ(accepted(simulation(R"(substeps="1")")).contact.substeps, 1u);
     // with the scene's max_steps of 10, 200 sub-steps make the most work a control may take
     EXPECT_EQ(accepted(simulation(R"(substeps="200")")).contact.substeps, 200u);
@@ -573,8 +574,10 @@ TEST(PhysicsSceneLoader, SpeedsForceAndStepArePositiveAndBounded)
     {
         SCOPED_TRACE(limit.attribute);
         const std::string name = limit.attribute;
-        expectError(limits(name + "=\"0\""), 4, "attribute '" + name + "' of <limits> must be positive, got 0");
-        expectError(limits(name + "=\"-1\""), 4, "attribute '" + name + "' of <limits> must be positive, got -1");
+        expectError(limits(name + "=\"0\""), 4,
+                    "attribute '" + name + "' of <limits> must be positive, got 0");
+        expectError(limits(name + "=\"-1\""), 4,
+                    "attribute '" + name + "' of <limits> must be positive, got -1");
         expectError(limits(name + "=\"" + limit.above + "\""), 4,
                     name + " must be in [0, " + limit.high + "], got " + limit.above);
         accepted(limits(name + "=\"1e-9\""));
@@ -596,8 +599,7 @@ TEST(PhysicsSceneLoader, ControlStepsInTheirRangeAndMaxNotBelowMin)
         SCOPED_TRACE(attribute);
         const std::string name = attribute;
         expectError(limits(name + "=\"0\""), 4, name + " must be a whole number in [1, 2000], got 0");
-        expectError(limits(name + "=\"2001\""), 4,
-                    name + " must be a whole number in [1, 2000], got 2001");
+        expectError(limits(name + "=\"2001\""), 4, name + " must be a whole number in [1, 2000], got 2001");
         expectError(limits(name + "=\"1.5\""), 4, name + " must be a whole number in [1, 2000], got 1.5");
     }
     expectError(limits(R"(min_steps="5" max_steps="4")"), 4, "max_steps (4) must not be below min_steps (5)");
@@ -632,8 +634,9 @@ TEST(PhysicsSceneLoader, MassesLengthsAndPositionsAreBoundedForODE)
                 "length must be in [0.001, 100], got 100.1");
     expectError(replaced(15, R"(  <goal xy="1000.1 -0.8" radius="0.1"/>)"), 15,
                 "attribute 'xy' of <goal> must lie within ±1000 in every component, got '1000.1'");
-    expectError(replaced(4, R"(  <limits robot_region="-1000.1 1 -1 1" body_region="-1.2 1.2 -1.2 1.2"/>)"), 4,
-                "attribute 'robot_region' of <limits> must lie within ±1000 in every component, got '-1000.1'");
+    expectError(
+        replaced(4, R"(  <limits robot_region="-1000.1 1 -1 1" body_region="-1.2 1.2 -1.2 1.2"/>)"), 4,
+        "attribute 'robot_region' of <limits> must lie within ±1000 in every component, got '-1000.1'");
     // just inside
     const PhysicsScene heavy =
         accepted(replaced(6, R"(  <robot name="robot" radius="0.001" mass="1000" start="-0.8 -0.8"/>)"));
@@ -851,8 +854,7 @@ TEST(PhysicsSceneLoader, ShapeSizesAreInTheirRange)
                 "radius must be in [0.001, 100], got 0");
     expectError(looseCube(at, R"(<cylinder radius="0.1" length="0"/>)"), 9,
                 "length must be in [0.001, 100], got 0");
-    expectError(looseCube(at, R"(<sphere radius="-0.1"/>)"), 9,
-                "radius must be in [0.001, 100], got -0.1");
+    expectError(looseCube(at, R"(<sphere radius="-0.1"/>)"), 9, "radius must be in [0.001, 100], got -0.1");
     expectError(looseCube(at, R"(<sphere radius="0.1" length="0.2"/>)"), 9,
                 "unknown attribute 'length' on <sphere> (allowed: radius)");
     expectError(
