@@ -82,6 +82,8 @@ namespace ompl_mm
         /** True when every moving joint is prismatic (false for a robot without moving joints). */
         bool allJointsPrismatic() const;
 
+        /** Index of the link called name, or -1 when there is none. */
+        int findLink(const std::string &name) const;
         /** Index of the link called name.
             @throws ompl_core::InputError (an ompl::Exception) when there is none. */
         int linkIndex(const std::string &name) const;

@@ -248,7 +248,7 @@ namespace ompl_core
 
     double XmlElement::inRange(const char *attribute, double low, double high) const
     {
-        number(attribute);  // present and well-formed
+        required(attribute);
         return inRange(attribute, low, high, 0.0);
     }
 

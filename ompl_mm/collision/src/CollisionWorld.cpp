@@ -131,12 +131,12 @@ namespace ompl_mm
         std::vector<std::pair<int, int>> allowed;
         const auto linkOf = [&robot](const AllowedCollision &pair, const std::string &name)
         {
-            for (std::size_t i = 0; i < robot.links().size(); ++i)
-                if (robot.links()[i].name == name)
-                    return static_cast<int>(i);
-            throw ompl_core::InputError(pair.where, "allow_collision names link '" + name +
-                                                        "', which robot '" + robot.name() +
-                                                        "' does not have");
+            const int index = robot.findLink(name);
+            if (index < 0)
+                throw ompl_core::InputError(pair.where, "allow_collision names link '" + name +
+                                                            "', which robot '" + robot.name() +
+                                                            "' does not have");
+            return index;
         };
         for (const AllowedCollision &pair : scene.robot.allowedCollisions)
             allowed.emplace_back(linkOf(pair, pair.link1), linkOf(pair, pair.link2));

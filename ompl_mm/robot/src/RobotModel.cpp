@@ -20,15 +20,26 @@ namespace ompl_mm
 {
     namespace
     {
-        /** The URDF's name for messages, the line of each link and joint element, and what each
-            link's element holds as written (urdfdom silently drops a collision it cannot read). */
+        /** A <link> element as written: urdfdom silently drops a collision it cannot read. */
+        struct LinkElement
+        {
+            int line{0};
+            std::size_t collisions{0};  ///< <collision> children
+            std::size_t visuals{0};     ///< <visual> children
+        };
+
+        /** The URDF's name for messages, its link elements and the line of each joint element. */
         struct UrdfSource
         {
             std::string name;
-            std::map<std::string, int> linkLines;
+            std::map<std::string, LinkElement> links;
             std::map<std::string, int> jointLines;
-            std::map<std::string, std::size_t> collisionElements;  ///< per link
-            std::map<std::string, std::size_t> visualElements;     ///< per link
+
+            LinkElement link(const std::string &link) const
+            {
+                auto it = links.find(link);
+                return it == links.end() ? LinkElement{} : it->second;
+            }
 
             int jointLine(const std::string &joint) const
             {
@@ -38,10 +49,8 @@ namespace ompl_mm
 
             ompl_core::InputError linkError(const std::string &link, const std::string &message) const
             {
-                auto it = linkLines.find(link);
-                return ompl_core::InputError(
-                    ompl_core::SourceLocation{name, it == linkLines.end() ? 0 : it->second},
-                    "link '" + link + "': " + message);
+                return ompl_core::InputError(ompl_core::SourceLocation{name, this->link(link).line},
+                                             "link '" + link + "': " + message);
             }
 
             ompl_core::InputError jointError(const std::string &joint, const std::string &message) const
@@ -62,7 +71,7 @@ namespace ompl_mm
             urdfdom rejects without saying which joint. */
         UrdfSource indexElements(const std::string &urdf, const std::string &sourceName)
         {
-            UrdfSource source{sourceName, {}, {}, {}, {}};
+            UrdfSource source{sourceName, {}, {}};
             tinyxml2::XMLDocument doc;
             if (doc.Parse(urdf.c_str(), urdf.size()) != tinyxml2::XML_SUCCESS)
                 throw ompl_core::InputError(
@@ -81,11 +90,8 @@ namespace ompl_mm
             };
             for (auto *e = robot->FirstChildElement("link"); e != nullptr; e = e->NextSiblingElement("link"))
                 if (const char *name = e->Attribute("name"))
-                {
-                    source.linkLines.emplace(name, e->GetLineNum());
-                    source.collisionElements.emplace(name, count(e, "collision"));
-                    source.visualElements.emplace(name, count(e, "visual"));
-                }
+                    source.links.emplace(
+                        name, LinkElement{e->GetLineNum(), count(e, "collision"), count(e, "visual")});
             for (auto *e = robot->FirstChildElement("joint"); e != nullptr;
                  e = e->NextSiblingElement("joint"))
             {
@@ -153,16 +159,12 @@ namespace ompl_mm
             that urdfdom dropped, or a <visual> without any <collision>, is an error. */
         std::vector<LinkShape> toLinkShapes(const urdf::Link &link, const UrdfSource &source)
         {
-            const auto written = [&](const std::map<std::string, std::size_t> &counts)
-            {
-                const auto it = counts.find(link.name);
-                return it == counts.end() ? std::size_t{0} : it->second;
-            };
-            if (link.collision_array.size() < written(source.collisionElements))
+            const LinkElement written = source.link(link.name);
+            if (link.collision_array.size() < written.collisions)
                 throw source.linkError(link.name,
                                        "a <collision> element could not be read (is its geometry "
                                        "complete, with numbers where numbers belong?)");
-            if (link.collision_array.empty() && written(source.visualElements) > 0)
+            if (link.collision_array.empty() && written.visuals > 0)
                 throw source.linkError(link.name,
                                        "has <visual> but no <collision> geometry, so it would pass "
                                        "through obstacles and objects; add a <collision> element");
@@ -318,12 +320,20 @@ namespace ompl_mm
         return robot;
     }
 
-    int RobotModel::linkIndex(const std::string &name) const
+    int RobotModel::findLink(const std::string &name) const
     {
         for (std::size_t i = 0; i < links_.size(); ++i)
             if (links_[i].name == name)
                 return static_cast<int>(i);
-        throw ompl_core::InputError("robot '" + name_ + "' has no link '" + name + "'");
+        return -1;
+    }
+
+    int RobotModel::linkIndex(const std::string &name) const
+    {
+        const int index = findLink(name);
+        if (index < 0)
+            throw ompl_core::InputError("robot '" + name_ + "' has no link '" + name + "'");
+        return index;
     }
 
     bool RobotModel::isInSubtree(int descendant, int ancestor) const

@@ -9,7 +9,6 @@
 #include <sstream>
 
 #include "ompl_core/io/InputError.h"
-#include "ompl_core/io/TextFormat.h"
 #include "ompl_core/io/XmlReading.h"
 #include "ompl_phys/scene/PhysicalBounds.h"
 

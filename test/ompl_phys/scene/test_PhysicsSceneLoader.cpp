@@ -445,6 +445,15 @@ namespace
             4, R"(  <limits robot_region="-1 1 -1 1" body_region="-1.2 1.2 -1.2 1.2" )" + attributes + "/>");
     }
 
+    /** limits() with one ODE sub-step per propagation step, so that up to 2000 steps per control
+        stay within the work a control may take. */
+    std::vector<std::string> limitsWithOneSubstep(const std::string &attributes)
+    {
+        std::vector<std::string> lines = limits(attributes);
+        lines[1] = R"(  <simulation substeps="1"/>)";
+        return lines;
+    }
+
     /** The small scene with the free cube (line 9) made of these origin, shape and extra attributes. */
     std::vector<std::string> looseCube(const std::string &origin, const std::string &shape,
                                        const std::string &bodyAttributes = R"(kind="free" mass="0.5")")
@@ -522,8 +531,7 @@ TEST(PhysicsSceneLoader, WorkPerControlIsBounded)
     expectError(simulation(R"(substeps="201")"), 4,
                 "max_steps × substeps = 10 × 201 = 2010 ODE sub-steps per control, more than 2000: one "
                 "control's propagation could overrun the planner's time limit");
-    std::vector<std::string> lines = limits(R"(min_steps="1" max_steps="2000")");
-    lines[1] = R"(  <simulation substeps="1"/>)";
+    std::vector<std::string> lines = limitsWithOneSubstep(R"(min_steps="1" max_steps="2000")");
     EXPECT_EQ(accepted(lines).limits.maxControlSteps, 2000u);
     lines[1] = R"(  <simulation substeps="2"/>)";
     expectError(lines, 4, "max_steps × substeps = 2000 × 2 = 4000 ODE sub-steps per control");
@@ -609,12 +617,10 @@ TEST(PhysicsSceneLoader, ControlStepsInTheirRangeAndMaxNotBelowMin)
     EXPECT_EQ(equal.limits.minControlSteps, 5u);
     EXPECT_EQ(equal.limits.maxControlSteps, 5u);
     // with one sub-step per step (the work per control is bounded: WorkPerControlIsBounded)
-    std::vector<std::string> widest = limits(R"(min_steps="1" max_steps="2000")");
-    widest[1] = R"(  <simulation substeps="1"/>)";
-    EXPECT_EQ(accepted(widest).limits.maxControlSteps, 2000u);
-    std::vector<std::string> highest = limits(R"(min_steps="2000" max_steps="2000")");
-    highest[1] = R"(  <simulation substeps="1"/>)";
-    EXPECT_EQ(accepted(highest).limits.minControlSteps, 2000u);
+    EXPECT_EQ(accepted(limitsWithOneSubstep(R"(min_steps="1" max_steps="2000")")).limits.maxControlSteps,
+              2000u);
+    EXPECT_EQ(accepted(limitsWithOneSubstep(R"(min_steps="2000" max_steps="2000")")).limits.minControlSteps,
+              2000u);
 }
 
 TEST(PhysicsSceneLoader, MassesLengthsAndPositionsAreBoundedForODE)
