@@ -1,6 +1,7 @@
 // ompl_mm_plan: plans a manipulation scene with MOPL and reports the result.
 // Exit codes: 0 solved, 1 not solved, 2 bad input.
 #include "common/AppSupport.h"
+#include "common/KeepUntilExit.h"
 #include "common/RunTermination.h"
 #include "ompl_mm/io/ManipulationRunResult.h"
 #include "ompl_mm/io/PathFile.h"
@@ -73,7 +74,8 @@ namespace
     {
         const ompl_mm::Scene scene = ompl_mm::loadScene(options.common.scene);
         ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
-        ompl_mm::ManipulationSetup setup(scene);
+        ompl_mm::ManipulationSetup &setup =
+            apps::keepUntilExit(std::make_unique<ompl_mm::ManipulationSetup>(scene));
         if (options.common.planner != scene.planner)
         {
             setup.setPlannerByName(options.common.planner);

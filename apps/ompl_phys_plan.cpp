@@ -2,6 +2,7 @@
 // re-simulates the solution from its controls and reports the result.
 // Exit codes: 0 solved, 1 not solved, 2 bad input.
 #include "common/AppSupport.h"
+#include "common/KeepUntilExit.h"
 #include "common/RunTermination.h"
 #include "ompl_phys/control/PathSimulation.h"
 #include "ompl_phys/control/PhysicsSetup.h"
@@ -76,7 +77,8 @@ namespace
     {
         const ompl_phys::PhysicsScene scene = ompl_phys::loadPhysicsScene(options.common.scene);
         ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
-        ompl_phys::PhysicsSetup setup(scene);
+        ompl_phys::PhysicsSetup &setup =
+            apps::keepUntilExit(std::make_unique<ompl_phys::PhysicsSetup>(scene));
         setup.setPlannerByName(options.common.planner);
         ompl_core::applyParameters(*setup.getPlanner(), options.common.parameterSettings());
         if (options.common.listParams)

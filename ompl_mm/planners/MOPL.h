@@ -14,6 +14,17 @@
 
 namespace ompl_mm
 {
+    /** connect_step's lowest value (metres or radians): every interpolation and tool-path
+        measurement takes length / step steps, so a finer step would only cost time. */
+    constexpr double MIN_CONNECT_STEP = 0.001;
+    /** connect_step's highest value: continuous motion checks make a coarser step safe, but a walk
+        blocked short of a contact would rarely have that much to keep. */
+    constexpr double MAX_CONNECT_STEP = 1.0;
+    /** vertex_step's lowest value (metres or radians): tree vertices come at least this far apart. */
+    constexpr double MIN_VERTEX_STEP = 0.01;
+    /** vertex_step's highest value. */
+    constexpr double MAX_VERTEX_STEP = 10.0;
+
     /** Where the planner spent its effort (times in seconds). Times, iterations and restarts add
         up over the solve() calls since the last clear(); the collision query counts are those of
         the last solve(). */
@@ -71,13 +82,13 @@ namespace ompl_mm
         /** The shortest stretch a walk blocked short of a contact keeps as a new vertex (metres or
             radians); 0.05 by default. Motions are checked continuously whatever it is. Also sets
             the state space's segment resolution (ManipulationStateSpace::setSegmentResolution).
-            @throws ompl::Exception when step is not positive and finite. */
+            @throws ompl::Exception when step is outside [MIN_CONNECT_STEP, MAX_CONNECT_STEP]. */
         void setConnectStep(double step);
         /** The shortest stretch a blocked walk keeps (metres or radians). */
         double getConnectStep() const { return connectStep_; }
         /** A tree vertex is added every this much motion along an extension (metres or radians:
             the larger of the joint-space distance and any object's displacement); 0.35 by default.
-            @throws ompl::Exception when step is not positive and finite. */
+            @throws ompl::Exception when step is outside [MIN_VERTEX_STEP, MAX_VERTEX_STEP]. */
         void setVertexStep(double step);
         /** Motion between tree vertices along an extension (metres or radians). */
         double getVertexStep() const { return vertexStep_; }

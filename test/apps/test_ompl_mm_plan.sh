@@ -231,7 +231,7 @@ else
     not_ok "--param restart_iterations=50 reaches MOPL: the run restarts" "json: $(head -c 600 "$restarts_json")" "$(outputs)"
 fi
 
-expect_listed "--list-params shows a --param value and the scene's" "  vertex_step = 0.3 (range 0.01:0.01:10.)" \
+expect_listed "--list-params shows a --param value and the scene's" "  vertex_step = 0.3 (range 0.01:0.01:10)" \
     "$scene" --list-params --param vertex_step=0.3
 expect_listed "--list-params shows the scene's parameters" "  moving_object_penalty = 0.6 (range 0.:0.1:100.)" \
     "$scene" --list-params
@@ -250,7 +250,7 @@ expect_bad_option "--param restart_iterations=1.5" "(range 0:1000:1000000): must
 expect_bad_option "--param restart_iterations=1e20" "bad value '1e20' for parameter 'restart_iterations'" "$scene" --param restart_iterations=1e20
 expect_bad_option "--param restart_iterations=0x10" "(range 0:1000:1000000): not a finite decimal number" "$scene" --param restart_iterations=0x10
 expect_bad_option "--param smoothing_attempts=-1" "bad value '-1' for parameter 'smoothing_attempts'" "$scene" --param smoothing_attempts=-1
-expect_bad_option "--param connect_step=1e-9" "bad value '1e-9' for parameter 'connect_step' of planner MOPL (range 0.001:0.001:1.): out of range" \
+expect_bad_option "--param connect_step=1e-9" "bad value '1e-9' for parameter 'connect_step' of planner MOPL (range 0.001:0.001:1): out of range" \
     "$scene" --param connect_step=1e-9
 expect_bad_option "--param joint_weight=-1" "bad value '-1' for parameter 'joint_weight' of planner MOPL (range 0.:0.1:100.): out of range" \
     "$scene" --param joint_weight=-1

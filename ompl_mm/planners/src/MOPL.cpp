@@ -1,10 +1,8 @@
 #include "ompl_mm/planners/MOPL.h"
 
 #include "ompl_core/io/TextFormat.h"
-
-#include "ompl_mm/geometric/ManipulationMotionValidator.h"
-
 #include "ompl_mm/base/ManipulationValidityChecker.h"
+#include "ompl_mm/geometric/ManipulationMotionValidator.h"
 
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/goals/GoalState.h>
@@ -46,6 +44,23 @@ namespace ompl_mm
                     "MOPL", "needs a ManipulationStateSpace, got " + si->getStateSpace()->getName());
             return space;
         }
+
+        /** OMPL's range suggestion "LOW:STEP:HIGH" for a parameter stepped by its lowest value. */
+        std::string rangeSuggestion(double low, double high)
+        {
+            return ompl_core::formatNumber(low) + ":" + ompl_core::formatNumber(low) + ":" +
+                   ompl_core::formatNumber(high);
+        }
+
+        /** @throws ompl::Exception naming the parameter, its range and the value when value is outside
+            [low, high] (NaN is). */
+        void checkWithin(const std::string &name, double value, double low, double high)
+        {
+            if (!(value >= low && value <= high))
+                throw ompl::Exception("MOPL", name + " must be in [" + ompl_core::formatNumber(low) + ", " +
+                                                  ompl_core::formatNumber(high) + "], got " +
+                                                  ompl_core::formatNumber(value));
+        }
     }  // namespace
 
     MOPL::MOPL(const ob::SpaceInformationPtr &si, std::vector<PrimitivePtr> primitives)
@@ -72,9 +87,9 @@ namespace ompl_mm
     void MOPL::declareParameters()
     {
         declareParam<double>("connect_step", this, &MOPL::setConnectStep, &MOPL::getConnectStep,
-                             "0.001:0.001:1.");
+                             rangeSuggestion(MIN_CONNECT_STEP, MAX_CONNECT_STEP));
         declareParam<double>("vertex_step", this, &MOPL::setVertexStep, &MOPL::getVertexStep,
-                             "0.01:0.01:10.");
+                             rangeSuggestion(MIN_VERTEX_STEP, MAX_VERTEX_STEP));
         declareParam<unsigned int>("restart_iterations", this, &MOPL::setRestartIterations,
                                    &MOPL::getRestartIterations, "0:1000:1000000");
         declareParam<unsigned int>("smoothing_attempts", this, &MOPL::setSmoothingAttempts,
@@ -107,8 +122,7 @@ namespace ompl_mm
                 name,
                 [this, name, field](double v)
                 {
-                    if (!(v >= 0.0 && v <= 1.0))
-                        throw ompl::Exception("MOPL", name + " must be in [0, 1], got " + std::to_string(v));
+                    checkWithin(name, v, 0.0, 1.0);
                     probabilities_.*field = v;
                 },
                 [this, field]() { return probabilities_.*field; });
@@ -122,8 +136,7 @@ namespace ompl_mm
 
     void MOPL::setConnectStep(double step)
     {
-        if (!(step > 0.0) || !std::isfinite(step))
-            throw ompl::Exception("MOPL", "connect_step must be positive, got " + std::to_string(step));
+        checkWithin("connect_step", step, MIN_CONNECT_STEP, MAX_CONNECT_STEP);
         // OMPL's discretisations and the tool path's measure step as finely
         std::static_pointer_cast<ManipulationStateSpace>(si_->getStateSpace())->setSegmentResolution(step);
         connectStep_ = step;
@@ -131,8 +144,7 @@ namespace ompl_mm
 
     void MOPL::setVertexStep(double step)
     {
-        if (!(step > 0.0) || !std::isfinite(step))
-            throw ompl::Exception("MOPL", "vertex_step must be positive, got " + std::to_string(step));
+        checkWithin("vertex_step", step, MIN_VERTEX_STEP, MAX_VERTEX_STEP);
         vertexStep_ = step;
     }
 

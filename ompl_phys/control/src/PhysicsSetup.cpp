@@ -1,17 +1,16 @@
 #include "ompl_phys/control/PhysicsSetup.h"
 
-#include "ompl_core/io/TextFormat.h"
-
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/TextFormat.h"
 #include "ompl_core/run/ParameterSetting.h"
 #include "ompl_phys/base/PhysicsGoal.h"
 #include "ompl_phys/base/PhysicsValidityChecker.h"
 #include "ompl_phys/base/RobotProjection.h"
+#include "ompl_phys/control/PDSTPlanner.h"
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/control/planners/est/EST.h>
 #include <ompl/control/planners/kpiece/KPIECE1.h>
-#include <ompl/control/planners/pdst/PDST.h>
 #include <ompl/control/planners/rrt/RRT.h>
 #include <ompl/control/planners/sst/SST.h>
 #include <ompl/control/planners/syclop/SyclopEST.h>
@@ -131,7 +130,8 @@ namespace ompl_phys
                 [](PhysicsSetup &s)
                 { return std::make_shared<oc::SyclopEST>(s.getSpaceInformation(), s.decomposition()); });
             planners.add("pdst", "PDST",
-                         [](PhysicsSetup &s) { return std::make_shared<oc::PDST>(s.getSpaceInformation()); });
+                         [](PhysicsSetup &s)
+                         { return std::make_shared<PDSTPlanner>(s.getSpaceInformation()); });
             planners.add("sst", "SST, stopping at its first solution",
                          [](PhysicsSetup &s)
                          {

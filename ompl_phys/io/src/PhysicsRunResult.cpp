@@ -1,16 +1,26 @@
 #include "ompl_phys/io/PhysicsRunResult.h"
 
+#include "ompl_phys/control/PDSTPlanner.h"
+
 #include <ompl/control/PlannerData.h>
 
 namespace ompl_phys
 {
     namespace
     {
-        ompl_core::RunRecord statisticsRecord(const PhysicsSetup &setup)
+        std::size_t treeVertexCount(const PhysicsSetup &setup)
         {
-            const PhysicsStatePropagator::Counters &c = setup.propagator().counters();
+            if (const auto *pdst = dynamic_cast<const PDSTPlanner *>(setup.getPlanner().get()))
+                return pdst->motionCount();
             ompl::control::PlannerData data(setup.getSpaceInformation());
             setup.getPlanner()->getPlannerData(data);
+            return data.numVertices();
+        }
+
+        ompl_core::RunRecord statisticsRecord(const PhysicsSetup &setup)
+        {
+            // a copy: reading the tree may propagate, which must not count as planning
+            const PhysicsStatePropagator::Counters c = setup.propagator().counters();
             ompl_core::RunRecord stops;
             for (int v = 1; v < VIOLATION_KINDS; ++v)
                 stops.addCount(violationName(static_cast<Violation>(v)),
@@ -18,7 +28,7 @@ namespace ompl_phys
             ompl_core::RunRecord stats;
             stats.addCount("propagations", c.propagations)
                 .addCount("substeps", c.substeps)
-                .addCount("tree_vertices", data.numVertices())
+                .addCount("tree_vertices", treeVertexCount(setup))
                 .addRecord("stops", stops);
             return stats;
         }

@@ -231,36 +231,40 @@ TEST(MOPL, RestartsClearTheTreesAndStillSolve)
     EXPECT_TRUE(setup.manipulationPath().check());
 }
 
-TEST(MOPLParameters, StepsMustBePositiveAndFiniteAndSmallOnesAreAccepted)
+TEST(MOPLParameters, StepsMustLieInTheirDeclaredRanges)
 {
-    // connect_step and vertex_step reject 0, negatives, infinity and NaN, naming the value
+    // the C++ setters hold the same ranges as the declared parameters: a step of 1e-9 once made
+    // every interpolation take billions of steps; their ends are accepted, just beyond them not
     ManipulationSetup setup(mobileBlockedScene());
     MOPL &mopl = *setup.mopl();
-    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setConnectStep(0.0); }),
-              "MOPL: connect_step must be positive, got 0.000000");
-    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setConnectStep(-0.05); }),
-              "MOPL: connect_step must be positive, got -0.050000");
-    EXPECT_EQ(
-        ompl_core::test::exceptionOf([&] { mopl.setConnectStep(std::numeric_limits<double>::infinity()); }),
-        "MOPL: connect_step must be positive, got inf");
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const auto &[value, shown] : std::vector<std::pair<double, std::string>>{
+             {0.0, "0"}, {-0.05, "-0.05"}, {0.000999, "0.000999"}, {1.001, "1.001"}, {inf, "inf"}})
+        EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setConnectStep(value); }),
+                  "MOPL: connect_step must be in [0.001, 1], got " + shown);
     EXPECT_TRUE(startsWith(ompl_core::test::exceptionOf([&] { mopl.setConnectStep(std::nan("")); }),
-                           "MOPL: connect_step must be positive, got "));
+                           "MOPL: connect_step must be in [0.001, 1], got "));
     EXPECT_EQ(mopl.getConnectStep(), 0.05) << "a rejected value leaves the scene's";
-    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setConnectStep(1e-6); }), "");
-    EXPECT_EQ(mopl.getConnectStep(), 1e-6);
+    for (double inside : {MIN_CONNECT_STEP, MAX_CONNECT_STEP})
+    {
+        EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setConnectStep(inside); }), "");
+        EXPECT_EQ(mopl.getConnectStep(), inside);
+    }
+    EXPECT_EQ(mopl.params().getParam("connect_step")->getRangeSuggestion(), "0.001:0.001:1");
 
-    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setVertexStep(0.0); }),
-              "MOPL: vertex_step must be positive, got 0.000000");
-    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setVertexStep(-1.0); }),
-              "MOPL: vertex_step must be positive, got -1.000000");
-    EXPECT_EQ(
-        ompl_core::test::exceptionOf([&] { mopl.setVertexStep(std::numeric_limits<double>::infinity()); }),
-        "MOPL: vertex_step must be positive, got inf");
+    for (const auto &[value, shown] : std::vector<std::pair<double, std::string>>{
+             {0.0, "0"}, {-1.0, "-1"}, {0.00999, "0.00999"}, {10.01, "10.01"}, {inf, "inf"}})
+        EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setVertexStep(value); }),
+                  "MOPL: vertex_step must be in [0.01, 10], got " + shown);
     EXPECT_TRUE(startsWith(ompl_core::test::exceptionOf([&] { mopl.setVertexStep(std::nan("")); }),
-                           "MOPL: vertex_step must be positive, got "));
+                           "MOPL: vertex_step must be in [0.01, 10], got "));
     EXPECT_EQ(mopl.getVertexStep(), 0.35) << "a rejected value leaves the scene's";
-    EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setVertexStep(1e-6); }), "");
-    EXPECT_EQ(mopl.getVertexStep(), 1e-6);
+    for (double inside : {MIN_VERTEX_STEP, MAX_VERTEX_STEP})
+    {
+        EXPECT_EQ(ompl_core::test::exceptionOf([&] { mopl.setVertexStep(inside); }), "");
+        EXPECT_EQ(mopl.getVertexStep(), inside);
+    }
+    EXPECT_EQ(mopl.params().getParam("vertex_step")->getRangeSuggestion(), "0.01:0.01:10");
 }
 
 TEST(MOPLParameters, ProbabilitiesMustLieInTheClosedUnitInterval)
@@ -273,9 +277,9 @@ TEST(MOPLParameters, ProbabilitiesMustLieInTheClosedUnitInterval)
                                    "start_value_probability", "random_robot_probability"})
     {
         EXPECT_EQ(ompl_core::test::exceptionOf([&] { params.setParam(name, "-0.01"); }),
-                  "MOPL: " + name + " must be in [0, 1], got -0.010000");
+                  "MOPL: " + name + " must be in [0, 1], got -0.01");
         EXPECT_EQ(ompl_core::test::exceptionOf([&] { params.setParam(name, "1.01"); }),
-                  "MOPL: " + name + " must be in [0, 1], got 1.010000");
+                  "MOPL: " + name + " must be in [0, 1], got 1.01");
         for (const char *inside : {"0", "1"})
         {
             EXPECT_TRUE(params.setParam(name, inside)) << name << " = " << inside;

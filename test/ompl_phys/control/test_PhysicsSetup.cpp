@@ -4,7 +4,9 @@
 
 #include "ompl_phys/base/RobotProjection.h"
 #include "ompl_phys/common/PhysicsTestSupport.h"
+#include "ompl_phys/control/PDSTPlanner.h"
 #include "ompl_phys/control/PathSimulation.h"
+#include "ompl_phys/io/PhysicsRunResult.h"
 #include "ompl_phys/metrics/TrajectoryMetrics.h"
 
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
@@ -437,4 +439,26 @@ TEST(PhysicsSetup, GoalJustCoveredOrFreeOfAFixedBody)
             7,
             R"(  <body name="wall" kind="fixed"><origin xyz="0.8 -0.619 0.1"/><box size="1 0.2 0.2"/></body>)"),
         "");
+}
+
+TEST(PhysicsSetup, RunResultReadsPdstTreeWithoutPropagating)
+{
+    // PDST::getPlannerData simulates every split motion again; the run record must neither wait for
+    // that after the time limit nor count it as planning
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    seedOmpl(4);
+    PhysicsSetup setup(benchmarkScene(1));
+    setup.setPlannerByName("pdst");
+    setup.solve(ompl::base::IterationTerminationCondition(2000));
+    const PhysicsStatePropagator::Counters before = setup.propagator().counters();
+    const ompl_core::RunResult result = physicsRunResult({"scene 1", "pdst", 4, 1.0}, setup, nullptr);
+    EXPECT_EQ(setup.propagator().counters().propagations, before.propagations);
+
+    const auto count = [&](const std::string &path)
+    { return std::get<std::uint64_t>(result.details.find(path)->value); };
+    EXPECT_EQ(count("stats.propagations"), before.propagations);
+    const auto *pdst = dynamic_cast<const PDSTPlanner *>(setup.getPlanner().get());
+    ASSERT_NE(pdst, nullptr);
+    EXPECT_EQ(count("stats.tree_vertices"), pdst->motionCount());
+    EXPECT_GT(pdst->motionCount(), 100u);
 }
