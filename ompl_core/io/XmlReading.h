@@ -1,4 +1,4 @@
-/* Reading XML input files so that every error names file:line: numbers and angles, the XmlElement
+/* Reading XML input files so that every error names file:line: the XmlElement
    view, and the checks the scene loaders of both libraries share (the root, names used once,
    children by tag). Knows nothing of what the elements mean. */
 #pragma once
@@ -27,14 +27,6 @@ namespace ompl_core
 {
     /** A number, or nothing for "*" (don't care). */
     using OptionalNumber = std::optional<double>;
-
-    /** A finite decimal number filling the whole token ("1", "-0.5", "+2e-3"), else nothing.
-        Independent of the C locale. */
-    std::optional<double> parseNumber(std::string_view token);
-
-    /** A number in radians, or in degrees when followed by "deg" ("90deg"), converted to radians;
-        nothing when malformed or not finite. */
-    std::optional<double> parseAngle(std::string_view token);
 
     /** A readable description of a tinyxml2 syntax error (errorId is a tinyxml2::XMLError, errorStr
         its ErrorStr()), such as "end tag missing or mismatched for <a>". */
@@ -180,14 +172,6 @@ namespace ompl_core
     constexpr double MIN_LENGTH = 1e-3;
     /** The longest length of a shape, metres (see MIN_LENGTH). */
     constexpr double MAX_LENGTH = 100.0;
-
-    /** The largest input file read: 64 MiB, far above any scene or robot description. */
-    constexpr std::uintmax_t MAX_INPUT_FILE_BYTES = 64u << 20u;
-
-    /** The whole text of an input file; what names the kind of file in messages ("scene file").
-        @throws InputError "path: <what> not found" (or a directory, not a regular file such as
-        /dev/zero, larger than MAX_INPUT_FILE_BYTES, or unreadable). */
-    std::string readInputFile(const std::string &path, const std::string &what);
 
     /** Parses xml into document and returns its only root element, which must be the element
         called rootName. The returned view points into document, which must outlive it.

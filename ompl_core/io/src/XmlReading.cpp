@@ -11,15 +11,13 @@
 #include <utility>
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/NumberText.h"
 #include "ompl_core/io/TextFormat.h"
 
 namespace ompl_core
 {
     namespace
     {
-        constexpr std::string_view DEGREE_SUFFIX = "deg";
-        constexpr double RADIANS_PER_DEGREE = 3.14159265358979323846 / 180.0;
-
         std::vector<std::string> splitWhitespace(const char *text)
         {
             std::vector<std::string> tokens;
@@ -48,33 +46,6 @@ namespace ompl_core
             return std::string(text).find_first_not_of(" \t\r\n") == std::string::npos;
         }
     }  // namespace
-
-    std::optional<double> parseNumber(std::string_view token)
-    {
-        // from_chars rejects a leading '+', which users reasonably write
-        if (token.size() > 1 && token[0] == '+' && token[1] != '+' && token[1] != '-')
-            token.remove_prefix(1);
-        double value = 0.0;
-        const char *end = token.data() + token.size();
-        const auto [ptr, ec] = std::from_chars(token.data(), end, value);
-        if (ec != std::errc() || ptr != end || !std::isfinite(value))
-            return std::nullopt;
-        return value;
-    }
-
-    std::optional<double> parseAngle(std::string_view token)
-    {
-        if (token.size() > DEGREE_SUFFIX.size() &&
-            token.substr(token.size() - DEGREE_SUFFIX.size()) == DEGREE_SUFFIX)
-        {
-            const std::optional<double> degrees =
-                parseNumber(token.substr(0, token.size() - DEGREE_SUFFIX.size()));
-            if (!degrees)
-                return std::nullopt;
-            return *degrees * RADIANS_PER_DEGREE;
-        }
-        return parseNumber(token);
-    }
 
     std::string describeXmlError(int errorId, const std::string &errorStr)
     {
@@ -380,29 +351,6 @@ namespace ompl_core
             values.emplace_back(parsed);
         }
         return values;
-    }
-
-    std::string readInputFile(const std::string &path, const std::string &what)
-    {
-        std::error_code error;
-        if (std::filesystem::is_directory(path, error))
-            throw InputError(SourceLocation{path, 0}, "is a directory, not a " + what);
-        // a device or pipe (/dev/zero) could be read forever; a huge file would exhaust memory
-        if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
-            throw InputError(SourceLocation{path, 0}, "is not a regular file, not a " + what);
-        const std::uintmax_t size = std::filesystem::file_size(path, error);
-        if (!error && size > MAX_INPUT_FILE_BYTES)
-            throw InputError(SourceLocation{path, 0}, what + " of " + std::to_string(size) +
-                                                          " bytes is larger than the limit of " +
-                                                          std::to_string(MAX_INPUT_FILE_BYTES) + " bytes");
-        std::ifstream in(path, std::ios::binary);
-        if (!in)
-            throw InputError(SourceLocation{path, 0}, std::filesystem::exists(path, error)
-                                                          ? "cannot read the " + what
-                                                          : what + " not found");
-        std::ostringstream text;
-        text << in.rdbuf();
-        return text.str();
     }
 
     XmlElement parseRootElement(tinyxml2::XMLDocument &document, const std::string &xml,

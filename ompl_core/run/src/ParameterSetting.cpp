@@ -1,8 +1,8 @@
 #include "ompl_core/run/ParameterSetting.h"
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/NumberText.h"
 #include "ompl_core/io/TextFormat.h"
-#include "ompl_core/io/XmlReading.h"
 
 #include <ompl/base/GenericParam.h>
 

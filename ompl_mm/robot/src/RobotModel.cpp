@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/InputFile.h"
 #include "ompl_core/io/XmlReading.h"
 
 namespace ompl_mm

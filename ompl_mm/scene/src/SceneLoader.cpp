@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/InputFile.h"
 #include "ompl_core/io/XmlReading.h"
 
 namespace ompl_mm

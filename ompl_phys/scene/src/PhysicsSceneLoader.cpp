@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/InputFile.h"
 #include "ompl_core/io/XmlReading.h"
 #include "ompl_phys/scene/PhysicalBounds.h"
 

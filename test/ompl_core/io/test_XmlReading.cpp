@@ -1,6 +1,6 @@
-// Tests for XmlReading: numbers and angles, every reader of XmlElement with its bounds, '*' only where
-// allowed, unknown attributes and children, text in elements, names and tags used twice, input files and
-// the root element; every error is an InputError naming file:line.
+// Tests for XmlReading: every reader of XmlElement with its bounds, '*' only where allowed, unknown
+// attributes and children, text in elements, names and tags used twice and the root element; every error
+// is an InputError naming file:line.
 #include "ompl_core/io/XmlReading.h"
 
 #include "common/InputErrors.h"
@@ -9,14 +9,7 @@
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
-#include <sys/socket.h>
-#include <sys/un.h>
-#include <unistd.h>
-
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -58,47 +51,7 @@ namespace
         tinyxml2::XMLDocument document;
         return inputErrorOf([&] { parseRootElement(document, xml, "t.xml", "r"); });
     }
-
-    /** A fresh, empty scratch directory for this test program. */
-    std::filesystem::path scratchDirectory()
-    {
-        const std::filesystem::path dir =
-            std::filesystem::temp_directory_path() / "ompl_core_test_XmlReading_scratch";
-        std::filesystem::remove_all(dir);
-        std::filesystem::create_directories(dir);
-        return dir;
-    }
 }  // namespace
-
-// --- parseNumber and parseAngle ---------------------------------------------------------------------------
-
-TEST(ParseNumber, AcceptsFiniteDecimalNumbersFillingTheToken)
-{
-    EXPECT_EQ(parseNumber("1"), 1.0);
-    EXPECT_EQ(parseNumber("-0.5"), -0.5);
-    EXPECT_EQ(parseNumber("+2e-3"), 2e-3);  // a leading '+' is allowed
-    EXPECT_EQ(parseNumber("1e308"), 1e308);
-    EXPECT_EQ(parseNumber(".5"), 0.5);
-}
-
-TEST(ParseNumber, RejectsMalformedOrNonFiniteTokens)
-{
-    for (const char *token : {"", "+", "++1", "+-1", "1.5x", "abc", " 1", "1 ", "1,5", "0x10", "nan", "inf",
-                              "-inf", "1e309", "--1"})
-        EXPECT_FALSE(parseNumber(token).has_value()) << "'" << token << "'";
-}
-
-TEST(ParseAngle, RadiansOrDegreesWithSuffix)
-{
-    EXPECT_EQ(parseAngle("1.5"), 1.5);
-    EXPECT_NEAR(*parseAngle("90deg"), PI / 2, 1e-15);
-    EXPECT_NEAR(*parseAngle("-45deg"), -PI / 4, 1e-15);
-    EXPECT_NEAR(*parseAngle("+180deg"), PI, 1e-15);
-    for (const char *token : {"deg", "xdeg", "90 deg", "90degs", "infdeg", "90DEG", "nan", ""})
-        EXPECT_FALSE(parseAngle(token).has_value()) << "'" << token << "'";
-}
-
-// --- the root element and XML syntax ---------------------------------------------------------------------
 
 TEST(ParseRootElement, AcceptsTheOneExpectedRoot)
 {
@@ -146,62 +99,6 @@ TEST(ParseRootElement, SecondRootElement)
 TEST(ParseRootElement, WrongRootElement)
 {
     EXPECT_EQ(parseError("\n<scene/>"), "t.xml:2: the root element must be <r>, found <scene>");
-}
-
-// --- input files ------------------------------------------------------------------------------------------
-
-TEST(ReadInputFile, ReadsTheWholeFile)
-{
-    const std::filesystem::path file = scratchDirectory() / "ok.xml";
-    std::ofstream(file, std::ios::binary) << "<r>\r\n</r>\n";
-    EXPECT_EQ(readInputFile(file.string(), "scene file"), "<r>\r\n</r>\n");
-}
-
-TEST(ReadInputFile, MissingFile)
-{
-    const std::string path = (scratchDirectory() / "missing.xml").string();
-    EXPECT_EQ(inputErrorOf([&] { readInputFile(path, "scene file"); }), path + ": scene file not found");
-}
-
-TEST(ReadInputFile, Directory)
-{
-    const std::string path = scratchDirectory().string();
-    EXPECT_EQ(inputErrorOf([&] { readInputFile(path, "scene file"); }),
-              path + ": is a directory, not a scene file");
-}
-
-TEST(ReadInputFile, UnreadableFile)
-{
-    // a Unix socket exists and is no directory, but cannot be opened as a file (not even by root)
-    const std::filesystem::path file = scratchDirectory() / "socket.xml";
-    const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
-    ASSERT_GE(fd, 0);
-    sockaddr_un address{};
-    address.sun_family = AF_UNIX;
-    ASSERT_LT(file.string().size(), sizeof(address.sun_path));
-    std::strcpy(address.sun_path, file.c_str());
-    ASSERT_EQ(::bind(fd, reinterpret_cast<const sockaddr *>(&address), sizeof(address)), 0);
-    EXPECT_EQ(inputErrorOf([&] { readInputFile(file.string(), "URDF file"); }),
-              file.string() + ": is not a regular file, not a URDF file");
-    ::close(fd);
-}
-
-TEST(ReadInputFile, RejectsDevicesAndHugeFilesBeforeReading)
-{
-    // /dev/zero would be read forever
-    EXPECT_EQ(inputErrorOf([&] { readInputFile("/dev/zero", "scene file"); }),
-              "/dev/zero: is not a regular file, not a scene file");
-    // a sparse file just over the limit costs no disk; one at the limit is read
-    const std::filesystem::path file = scratchDirectory() / "huge.xml";
-    {
-        std::ofstream(file) << "<r/>";
-    }
-    std::filesystem::resize_file(file, MAX_INPUT_FILE_BYTES + 1);
-    EXPECT_EQ(inputErrorOf([&] { readInputFile(file.string(), "scene file"); }),
-              file.string() + ": scene file of 67108865 bytes is larger than the limit of 67108864 bytes");
-    std::filesystem::resize_file(file, MAX_INPUT_FILE_BYTES);
-    EXPECT_EQ(readInputFile(file.string(), "scene file").size(), MAX_INPUT_FILE_BYTES);
-    std::filesystem::remove(file);
 }
 
 // --- attributes and children ------------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include "ompl_core/io/XmlReading.h"
 
 #include "common/MobileBlocked.h"
+#include "ompl_core/io/NumberText.h"
 
 using namespace ompl_mm;
 using namespace ompl_mm::test;
