@@ -3,6 +3,7 @@
 #include "common/AppSupport.h"
 #include "common/KeepUntilExit.h"
 #include "common/RunTermination.h"
+#include "ompl_core/io/OutputFile.h"
 #include "ompl_mm/io/ManipulationRunResult.h"
 #include "ompl_mm/io/PathFile.h"
 #include "ompl_mm/io/SceneSvg.h"
@@ -90,9 +91,9 @@ namespace
         if (const std::shared_ptr<ompl_mm::MOPL> mopl = setup.mopl())
             mopl->setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         // open the outputs first: a bad path should not cost a whole planning run
-        apps::OutputFile json(options.common.json);
-        apps::OutputFile svg(options.common.svg);
-        apps::OutputFile path(options.path);
+        ompl_core::OutputFile json(options.common.json);
+        ompl_core::OutputFile svg(options.common.svg);
+        ompl_core::OutputFile path(options.path);
 
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
         setup.solve(apps::runTermination(timeLimit));

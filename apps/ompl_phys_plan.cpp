@@ -4,6 +4,7 @@
 #include "common/AppSupport.h"
 #include "common/KeepUntilExit.h"
 #include "common/RunTermination.h"
+#include "ompl_core/io/OutputFile.h"
 #include "ompl_phys/control/PathSimulation.h"
 #include "ompl_phys/control/PhysicsSetup.h"
 #include "ompl_phys/io/PhysicsPathFile.h"
@@ -87,9 +88,9 @@ namespace
             return 0;
         }
         // open the outputs first: a bad path should not cost a whole planning run
-        apps::OutputFile json(options.common.json);
-        apps::OutputFile svg(options.common.svg);
-        apps::OutputFile path(options.path);
+        ompl_core::OutputFile json(options.common.json);
+        ompl_core::OutputFile svg(options.common.svg);
+        ompl_core::OutputFile path(options.path);
 
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
         setup.solve(apps::runTermination(timeLimit));

@@ -4,8 +4,9 @@
    with the message on stderr prefixed by the app's name). */
 #pragma once
 
-#include "common/OutputFile.h"
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/run/CommandLine.h"
+#include "ompl_core/run/ExitStatus.h"
 #include "ompl_core/run/ParameterSetting.h"
 #include "ompl_core/run/RunRecord.h"
 
@@ -94,16 +95,7 @@ namespace apps
             "print the planner's parameters (values after the scene's and --param settings, ranges) and "
             "exit");
         named.add(extra);
-        po::options_description hidden;
-        hidden.add_options()("scene", po::value(&options.scene));
-        po::options_description all;
-        all.add(named).add(hidden);
-        po::positional_options_description positional;
-        positional.add("scene", 1);
-
-        po::variables_map vm;
-        po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
-        po::notify(vm);
+        const po::variables_map vm = ompl_core::parseCommandLine(argc, argv, named, "scene", options.scene);
         if (vm.count("help") || options.scene.empty())
         {
             std::cout << usage << "Exit status: 0 solved, 1 not solved, 2 bad input.\n\n" << named;
@@ -121,28 +113,16 @@ namespace apps
     int runApp(const char *name, const std::function<bool(Options &, int &)> &parse,
                const std::function<int(const Options &)> &run)
     {
-        try
-        {
-            Options options;
-            int exitCode = 0;
-            if (!parse(options, exitCode))
-                return exitCode;
-            ompl::msg::setLogLevel(options.common.verbose ? ompl::msg::LOG_INFO : ompl::msg::LOG_WARN);
-            return run(options);
-        }
-        catch (const boost::program_options::error &e)
-        {
-            std::cerr << name << ": " << e.what() << " (see --help)\n";
-        }
-        catch (const ompl::Exception &e)
-        {
-            std::cerr << name << ": " << e.what() << '\n';
-        }
-        catch (const OutputError &e)
-        {
-            std::cerr << name << ": " << e.what() << '\n';
-            return 1;
-        }
-        return 2;
+        return ompl_core::exitStatusOf<boost::program_options::error>(
+            name,
+            [&]
+            {
+                Options options;
+                int exitCode = 0;
+                if (!parse(options, exitCode))
+                    return exitCode;
+                ompl::msg::setLogLevel(options.common.verbose ? ompl::msg::LOG_INFO : ompl::msg::LOG_WARN);
+                return run(options);
+            });
     }
 }  // namespace apps

@@ -56,6 +56,9 @@ namespace ompl_phys
         const Counters &counters() const { return counters_; }
         /** Sets every count to 0. */
         void resetCounters() { counters_ = Counters(); }
+        /** Sets the counts back to earlier ones, so that simulating for something other than
+            planning (listing a tree, say) leaves them as planning left them. */
+        void restoreCounters(const Counters &counters) const { counters_ = counters; }
 
     private:
         const PhysicsStateSpace &space_;

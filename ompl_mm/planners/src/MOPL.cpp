@@ -482,13 +482,17 @@ namespace ompl_mm
                     data.addEdge(vertex, parent);
             }
         }
-        data.properties["time_sampling REAL"] = std::to_string(statistics_.samplingTime);
-        data.properties["time_nearest REAL"] = std::to_string(statistics_.nearestTime);
-        data.properties["time_propagate REAL"] = std::to_string(statistics_.propagateTime);
-        data.properties["time_connect REAL"] = std::to_string(statistics_.connectTime);
-        data.properties["time_smoothing REAL"] = std::to_string(statistics_.smoothingTime);
-        data.properties["time_ik REAL"] = "0";
+        // named as in the run record (ManipulationRunResult), so logs and JSON agree
+        data.properties["time_sampling_s REAL"] = ompl_core::exactText(statistics_.samplingTime);
+        data.properties["time_nearest_s REAL"] = ompl_core::exactText(statistics_.nearestTime);
+        data.properties["time_propagate_s REAL"] = ompl_core::exactText(statistics_.propagateTime);
+        data.properties["time_connect_s REAL"] = ompl_core::exactText(statistics_.connectTime);
+        data.properties["time_smoothing_s REAL"] = ompl_core::exactText(statistics_.smoothingTime);
+        data.properties["time_ik_s REAL"] = "0";
         data.properties["iterations INTEGER"] = std::to_string(statistics_.iterations);
+        data.properties["restarts INTEGER"] = std::to_string(statistics_.restarts);
+        data.properties["collision_queries INTEGER"] = std::to_string(statistics_.collisionQueries);
+        data.properties["collision_queries_free INTEGER"] = std::to_string(statistics_.freeCollisionQueries);
         // what users mean by a plan's length and size; Benchmark's own "solution length" is the
         // length in the whole state space
         const auto *solution =
@@ -496,13 +500,10 @@ namespace ompl_mm
         // a path that something changed into motions no primitive makes has no counts to give
         if (solution && solution->checkLabels().empty())
         {
-            data.properties["solution tool path length REAL"] =
-                ompl_core::exactText(solution->toolPathLength());
+            data.properties["path_length_m REAL"] = ompl_core::exactText(solution->toolPathLength());
+            data.properties["path_vertices INTEGER"] = std::to_string(solution->getStateCount());
             for (const auto &[kind, count] : solution->primitiveCounts())
-                data.properties["solution " + kind + " count INTEGER"] = std::to_string(count);
+                data.properties["primitives_" + kind + " INTEGER"] = std::to_string(count);
         }
-        data.properties["restarts INTEGER"] = std::to_string(statistics_.restarts);
-        data.properties["collision_queries INTEGER"] = std::to_string(statistics_.collisionQueries);
-        data.properties["collision_queries_free INTEGER"] = std::to_string(statistics_.freeCollisionQueries);
     }
 }  // namespace ompl_mm

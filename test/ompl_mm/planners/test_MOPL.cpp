@@ -163,7 +163,7 @@ TEST(MOPL, ReportsTimeoutWhenGoalIsWalledIn)
     EXPECT_FALSE(setup.getProblemDefinition()->hasExactSolution());
     ompl::base::PlannerData data(setup.getSpaceInformation());
     setup.getPlannerData(data);
-    EXPECT_EQ(data.properties.count("solution tool path length REAL"), 0u)
+    EXPECT_EQ(data.properties.count("path_length_m REAL"), 0u)
         << "no solution, no solution properties";
     EXPECT_EQ(data.properties.count("iterations INTEGER"), 1u);
 }

@@ -52,8 +52,8 @@ TEST(OmplTools, BenchmarkWithItsDefaultRequestGivesCorrectSimplifiedPaths)
                     (k == 0 || !(path.label(k - 1) == path.label(k))))
                     ++pushes;
             }
-            EXPECT_NEAR(std::stod(run.at("solution tool path length REAL")), toolLength, 1e-9 * toolLength);
-            EXPECT_EQ(run.at("solution push count INTEGER"), std::to_string(pushes));
+            EXPECT_NEAR(std::stod(run.at("path_length_m REAL")), toolLength, 1e-9 * toolLength);
+            EXPECT_EQ(run.at("primitives_push INTEGER"), std::to_string(pushes));
             ++rechecked;
         });
     ompl::tools::Benchmark::Request request;  // OMPL's defaults: simplify = true
@@ -83,7 +83,7 @@ TEST(OmplTools, CheckRejectsAnObjectMovedWithoutAPush)
     // Benchmark reads planner data after simplifying: a broken path gives no counts, and no throw
     ompl::base::PlannerData data(setup.getSpaceInformation());
     EXPECT_NO_THROW(setup.getPlannerData(data));
-    EXPECT_EQ(data.properties.count("solution tool path length REAL"), 0u);
+    EXPECT_EQ(data.properties.count("path_length_m REAL"), 0u);
 }
 
 TEST(OmplTools, SimplifySolutionKeepsTheLabelsTrue)
