@@ -4,6 +4,7 @@
 #include "common/KeepUntilExit.h"
 #include "common/RunTermination.h"
 #include "ompl_core/io/OutputFile.h"
+#include "ompl_core/run/GlobalSeed.h"
 #include "ompl_mm/io/ManipulationRunResult.h"
 #include "ompl_mm/io/PathFile.h"
 #include "ompl_mm/io/SceneSvg.h"
@@ -96,6 +97,8 @@ namespace
         ompl_core::OutputFile path(options.path);
 
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
+        setup.setup();
+        ompl_core::reseedOmpl(static_cast<std::uint32_t>(options.common.seed));  // as the benchmark tool does
         setup.solve(apps::runTermination(timeLimit));
         const bool solved = setup.getProblemDefinition()->hasExactSolution();
         if (solved && !setup.manipulationPath().check())

@@ -5,6 +5,7 @@
 #include "common/KeepUntilExit.h"
 #include "common/RunTermination.h"
 #include "ompl_core/io/OutputFile.h"
+#include "ompl_core/run/GlobalSeed.h"
 #include "ompl_phys/control/PathSimulation.h"
 #include "ompl_phys/control/PhysicsSetup.h"
 #include "ompl_phys/io/PhysicsPathFile.h"
@@ -93,6 +94,8 @@ namespace
         ompl_core::OutputFile path(options.path);
 
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
+        setup.setup();
+        ompl_core::reseedOmpl(static_cast<std::uint32_t>(options.common.seed));  // as the benchmark tool does
         setup.solve(apps::runTermination(timeLimit));
         const bool solved = setup.haveExactSolution();
         std::optional<ompl_phys::SimulatedPath> simulated;

@@ -5,6 +5,7 @@
 #include "ompl_core/bench/BenchmarkScene.h"
 #include "ompl_core/bench/PlannerSettings.h"
 #include "ompl_core/bench/RunProperties.h"
+#include "ompl_core/run/GlobalSeed.h"
 
 #include <memory>
 #include <string>
@@ -13,7 +14,8 @@
 namespace ompl_core
 {
     /** A BenchmarkScene whose runs plan on a Setup (a geometric or control SimpleSetup): each run
-        makes a setup afresh (makeSetup()), runs it once through ompl::tools::Benchmark, and adds
+        makes a setup afresh (makeSetup()), seeds OMPL again just before solving (reseedOmpl()),
+        runs it once through ompl::tools::Benchmark, and adds
         the seed and the run record (runDetails()) to the run's properties. */
     template <typename Setup>
     class SetupBenchmarkScene : public BenchmarkScene
@@ -40,6 +42,7 @@ namespace ompl_core
             const std::unique_ptr<Setup> setup = makeSetup(planner, problem, seed);
             ompl::tools::Benchmark benchmark(*setup, problem.name);
             benchmark.addPlanner(setup->getPlanner());
+            benchmark.setPreRunEvent([seed](const ompl::base::PlannerPtr &) { reseedOmpl(seed); });
             benchmark.setPostRunEvent(
                 [&](const ompl::base::PlannerPtr &, ompl::tools::Benchmark::RunProperties &properties)
                 {
