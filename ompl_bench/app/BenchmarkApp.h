@@ -4,7 +4,7 @@
 
 namespace ompl_bench
 {
-    /** Runs `NAME CONFIG.cfg [--shard K/N] [--quiet]`: reads the cfg (OMPL.app's ompl_benchmark
+    /** Runs `NAME CONFIG.cfg [--shard K/N] [--output DIR] [--quiet]`: reads the cfg (OMPL.app's ompl_benchmark
         format, see docs/benchmarks.md), runs the benchmark with planners from the registries of
         ompl_mm::ManipulationSetup and ompl_phys::PhysicsSetup (a planner a program adds there
         before this call can be named in the cfg), and writes OMPL benchmark logs.

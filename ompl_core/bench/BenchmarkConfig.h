@@ -64,9 +64,10 @@ namespace ompl_core
         NAME.param=value sets a parameter of the latest NAME, NAME.name=label names it). '#' starts
         a comment. Whether planners and parameters exist is left to the scene's registry.
         @throws InputError naming file:line for an unknown section or key, a key outside any
-        section, a malformed line, a value of the wrong kind or out of range, a key or section
-        given twice, a missing name or scene, no problem or no planner, or two planners with one
-        label. */
+        section, a malformed line, a value of the wrong kind or out of range, a key given twice in
+        [problem] or [benchmark], [benchmark] or [planner] given twice, a missing name or scene, or
+        two planners with one label; naming the file for a config without a problem or a planner.
+        In [planner], a later NAME.param line for the same planner wins. */
     BenchmarkConfig loadBenchmarkConfig(const std::string &path);
 
     /** Reads a config from text; file names it in messages and resolves relative paths.

@@ -225,7 +225,23 @@ def check_shards(checks, args, scratch):
         status, out, err = run([STATISTICS, log, "-a", "-d", merged])
         checks.check(f"ompl_benchmark_statistics -a merges {os.path.basename(log)} without warnings",
                      status == 0 and err == "", f"exit {status}", out, err)
+    # the Slurm array script, its task variables set by hand (no controller here), makes the same shard
+    slurm = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "benchmarks", "slurm_shard.sh")
+    slurm_out = os.path.join(folder, "slurm")
+    env = dict(os.environ, SLURM_ARRAY_TASK_ID="2", SLURM_ARRAY_TASK_COUNT="3",
+               BUILD=os.path.dirname(os.path.dirname(args.benchmark)))
+    done = subprocess.run(["bash", slurm, cfg, "--output", slurm_out], env=env, capture_output=True, text=True,
+                          timeout=RUN_LIMIT_S)
+    slurm_log = os.path.join(slurm_out, "split.shard-2-of-3.log")
+    slurm_db = os.path.join(folder, "slurm.db")
+    database([slurm_log], slurm_db)
+    shard_db = os.path.join(folder, "shard2.db")
+    database([logs[1]], shard_db)
     columns = ["seed", "solved", "path_length_m", "iterations", "primitives_push", "tree_vertices"]
+    checks.check("the Slurm array script makes shard 2 of 3 like GNU parallel did",
+                 done.returncode == 0 and os.path.isfile(slurm_log)
+                 and rows(slurm_db, columns) == rows(shard_db, columns),
+                 f"exit {done.returncode}", done.stderr)
     checks.check("merged shards hold the same (planner, seed, solved, length, metrics) rows as one run",
                  rows(merged, columns) == rows(whole, columns) and len(rows(whole, columns)) == 8,
                  f"whole:  {rows(whole, columns)}", f"shards: {rows(merged, columns)}")

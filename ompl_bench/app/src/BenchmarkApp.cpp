@@ -22,6 +22,7 @@ namespace ompl_bench
         {
             std::string config;
             std::string shard{"1/1"};
+            std::string output;  ///< overrides the cfg's output folder when set
             bool quiet{false};
         };
 
@@ -36,6 +37,8 @@ namespace ompl_bench
                 "make only shard K of N: every N-th run from run K, logged to CONFIG.shard-K-of-N.log; the "
                 "logs "
                 "of all N shards merge with ompl_benchmark_statistics -a")(
+                "output", po::value(&options.output)->value_name("DIR"),
+                "write logs and paths into DIR instead of the cfg's output folder")(
                 "quiet,q", po::bool_switch(&options.quiet), "print no progress");
             const po::variables_map vm =
                 ompl_core::parseCommandLine(argc, argv, named, "config", options.config);
@@ -43,7 +46,7 @@ namespace ompl_bench
             {
                 std::cout
                     << "Usage: " << program
-                    << " CONFIG.cfg [--shard K/N] [--quiet]\n"
+                    << " CONFIG.cfg [--shard K/N] [--output DIR] [--quiet]\n"
                        "Runs the benchmark that CONFIG.cfg describes (OMPL.app's ompl_benchmark format: "
                        "[problem], [benchmark],\n[planner]; see docs/benchmarks.md) and writes OMPL "
                        "benchmark logs for ompl_benchmark_statistics.\nExit status: 0 done, 1 an output "
@@ -59,7 +62,9 @@ namespace ompl_bench
         {
             const ompl_core::Shard shard = ompl_core::parseShard(options.shard);
             ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-            const ompl_core::BenchmarkConfig config = ompl_core::loadBenchmarkConfig(options.config);
+            ompl_core::BenchmarkConfig config = ompl_core::loadBenchmarkConfig(options.config);
+            if (!options.output.empty())
+                config.output = options.output;
             const std::vector<std::string> written = ompl_core::runBenchmark(
                 config, shard,
                 [&](const ompl_core::BenchmarkProblem &problem)

@@ -58,7 +58,9 @@ namespace ompl_core
 
             BenchmarkConfig parse(const std::string &text)
             {
-                std::istringstream in(text);
+                // a byte-order mark, as some Windows editors write, is no part of the first line
+                const std::string bom = "\xEF\xBB\xBF";
+                std::istringstream in(text.compare(0, bom.size(), bom) == 0 ? text.substr(bom.size()) : text);
                 std::string line;
                 int number = 0;
                 while (std::getline(in, line))
@@ -254,8 +256,8 @@ namespace ompl_core
                     throw InputError(entry.where,
                                      "'" + entry.key + "' must be a number, got '" + entry.value + "'");
                 if (*value < low || *value > high)
-                    throw InputError(entry.where, "'" + entry.key + "' must be in [" + formatNumber(low) +
-                                                      ", " + formatNumber(high) + "], got " + entry.value);
+                    throw InputError(entry.where, "'" + entry.key + "' must be in [" + exactText(low) + ", " +
+                                                      exactText(high) + "], got " + entry.value);
                 return *value;
             }
 
@@ -270,10 +272,14 @@ namespace ompl_core
 
             double timeLimit(const Entry &entry) const
             {
-                const double value = number(entry, 0.0, MAX_CONFIG_TIME_LIMIT);
-                if (value == 0.0)
-                    throw InputError(entry.where, "'time_limit' must be positive, got " + entry.value);
-                return value;
+                const std::optional<double> value = parseNumber(entry.value);
+                if (!value)
+                    throw InputError(entry.where, "'time_limit' must be a number, got '" + entry.value + "'");
+                if (!(*value > 0.0 && *value <= MAX_CONFIG_TIME_LIMIT))
+                    throw InputError(entry.where, "'time_limit' must be in (0, " +
+                                                      exactText(MAX_CONFIG_TIME_LIMIT) + "], got " +
+                                                      entry.value);
+                return *value;
             }
 
             bool flag(const Entry &entry) const

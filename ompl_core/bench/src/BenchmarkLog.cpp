@@ -28,6 +28,8 @@ namespace ompl_core
 
     void BenchmarkLog::addRuns(const CompleteExperiment &finished)
     {
+        if (finished.planners.empty())
+            return;
         if (exp_.planners.empty())
         {
             exp_.host = finished.host;

@@ -3,6 +3,7 @@
 #include "ompl_core/io/InputFile.h"
 
 #include "common/InputErrors.h"
+#include "common/ScratchDirectory.h"
 
 #include <gtest/gtest.h>
 
@@ -23,11 +24,7 @@ namespace
     /** A fresh, empty scratch directory for this test program. */
     std::filesystem::path scratchDirectory()
     {
-        const std::filesystem::path dir =
-            std::filesystem::temp_directory_path() / "ompl_core_test_InputFile_scratch";
-        std::filesystem::remove_all(dir);
-        std::filesystem::create_directories(dir);
-        return dir;
+        return ompl_core::test::scratchDirectory("ompl_core_test_InputFile_scratch");
     }
 }  // namespace
 
