@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs the project into a scratch prefix (not /usr), builds the downstream project in
-# test/downstream against it with find_package(ompl_mm) and find_package(ompl_phys), and plans the
-# installed mobile_blocked.xml and physics/scene1.xml scenes with it, found through the packages'
-# ompl_mm_SCENES_DIR and ompl_phys_SCENES_DIR.
+# test/downstream against it with find_package(ompl_mm), find_package(ompl_phys) and
+# find_package(ompl_bench), plans the installed mobile_blocked.xml and physics/scene1.xml scenes with
+# it, found through the packages' ompl_mm_SCENES_DIR and ompl_phys_SCENES_DIR, and benchmarks a
+# planner the downstream program registers.
 # Usage: run_downstream_test.sh BUILD_DIR SOURCE_DIR SCRATCH_DIR
 set -u
 
@@ -57,5 +58,21 @@ echo "== run on the package's physics scene (ompl_phys_SCENES_DIR)"
 "$downstream_build/downstream_phys"
 status=$?
 [ $status -eq 0 ] || fail "downstream_phys exited with $status (expected 0)"
+
+echo "== a benchmark with the program's own planner (find_package(ompl_bench))"
+cat > "$scratch/own.cfg" <<CFG || fail "cannot write $scratch/own.cfg"
+[problem]
+name = scene1
+scene = $phys_scene
+[benchmark]
+time_limit = 0.5
+run_count = 1
+[planner]
+greedy_rrt =
+CFG
+"$downstream_build/downstream_benchmark" "$scratch/own.cfg" --quiet
+status=$?
+[ $status -eq 0 ] || fail "downstream_benchmark exited with $status (expected 0)"
+grep -q "^control_greedy_rrt$" "$scratch/own.log" || fail "$scratch/own.log has no control_greedy_rrt"
 
 echo "downstream test passed"
