@@ -58,6 +58,16 @@ def write(path, text):
     return path
 
 
+def logged_runs(text):
+    """The runs of a single-planner log as {property name: value text}, read from the log itself."""
+    lines = text.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.endswith(" properties for each run"))
+    count = int(lines[start].split()[0])
+    names = ["_".join(line.split()[:-1]) for line in lines[start + 1:start + 1 + count]]
+    runs = int(lines[start + 1 + count].split()[0])
+    return [dict(zip(names, line.split("; "))) for line in lines[start + 2 + count:start + 2 + count + runs]]
+
+
 def database(logs, path):
     """Runs ompl_benchmark_statistics on logs into a fresh database: (status, stdout, stderr)."""
     if os.path.exists(path):
@@ -152,10 +162,15 @@ def check_mopl_log(checks, args, scratch):
     checks.check("experiment columns hold the scene file and the version",
                  scene_logged == os.path.normpath(scene) and version == "OMPL 1.5.2", scene_logged, version)
     runs = rows(db, ["seed", "solved", "path_length_m", "iterations", "path_vertices"])
-    logged_seeds = [line.split("; ") for line in text.splitlines() if line.endswith("; ")]
     checks.check("three runs, all solved, with distinct seeds",
                  len(runs) == 3 and all(r[2] == 1 for r in runs) and len({r[1] for r in runs}) == 3, runs)
-    checks.check("the database holds the log's rows", len(logged_seeds) == 3, logged_seeds)
+    logged = sorted((int(r["seed"]), float(r["path_length_m"]), int(r["iterations"]), int(r["tree_vertices"]))
+                    for r in logged_runs(text))
+    con = sqlite3.connect(db)
+    stored = sorted(con.execute("SELECT seed, path_length_m, iterations, tree_vertices FROM runs").fetchall())
+    con.close()
+    checks.check("the database holds the log's values (seed, path length, iterations, tree vertices)",
+                 logged == stored and len(logged) == 3, f"log: {logged}", f"database: {stored}")
     for name, seed, _, length, iterations, vertices in runs:
         json_path = os.path.join(scratch, f"seed{seed}.json")
         status, _, err = run([args.mm_plan, scene, "--seed", str(seed), "--json", json_path])
