@@ -6,8 +6,8 @@ and by planner configuration name, labelled without its 'geometric_' or 'control
 planner keeps its colour in every figure. Each figure has one panel per experiment name.
 
 Figures (file names in DIR):
-  time.png                   planning time of all runs per planner, box plots with every run as
-                             a point (x: not solved), the experiment's time limit dashed
+  time.png                   planning time of all runs per planner, box plots on a log scale with
+                             every run as a point (x: not solved), the experiment's time limit dashed
   success.png                solved runs per planner, percent, with k/n on each bar
   metric_action.png          action of the solved runs' re-simulated paths, N·s·m (physics)
   metric_power.png           power, W (physics)
@@ -319,11 +319,13 @@ def plot_time(plt, bench, out):
         groups = [[(v, r["solved"]) for r in bench.select(name, p) for v in bench.values([r], "time")]
                   for p in bench.planners]
         draw_boxes(ax, bench, groups, "no run")
-        top = max([v for g in groups for v, _ in g] + bench.time_limits.get(name, []) + [1e-9])
-        # the median in figures: boxes far below the time limit are too flat to read
+        # a log scale: run times span decades, and a limit far above them would flatten the boxes
+        times = [v for g in groups for v, _ in g if v > 0]
+        top = max(times + bench.time_limits.get(name, []) + [1e-3])
+        bottom = min(times + [top]) / 2
         for i, g in enumerate(groups):
             if g:
-                ax.text(i + 1, max(v for v, _ in g) + 0.03 * top, f"median\n{median([v for v, _ in g]):.3g} s",
+                ax.text(i + 1, max(v for v, _ in g) * 1.2, f"median\n{median([v for v, _ in g]):.3g} s",
                         ha="center", va="bottom", fontsize=8)
         handles = [Line2D([], [], marker="o", color="black", ls="", markersize=3.5, label="solved run"),
                    Line2D([], [], marker="x", color="#c00000", ls="", markersize=5, label="not solved")]
@@ -332,7 +334,8 @@ def plot_time(plt, bench, out):
         if name in bench.time_limits:
             limits = ", ".join(f"{t:g}" for t in bench.time_limits[name])
             handles.append(Line2D([], [], color="0.3", ls="--", label=f"time limit {limits} s"))
-        ax.set_ylim(0, top * 1.35)
+        ax.set_yscale("log")
+        ax.set_ylim(bottom, top * 8)
         ax.legend(handles=handles, loc="upper center", ncol=len(handles), fontsize=8,
                   handletextpad=0.3, columnspacing=1.5, frameon=False)
         ax.set_ylabel("planning time (s)")
