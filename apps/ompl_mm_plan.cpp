@@ -7,6 +7,7 @@
 #include "ompl_core/run/GlobalSeed.h"
 #include "ompl_mm/io/ManipulationRunResult.h"
 #include "ompl_mm/io/PathFile.h"
+#include "ompl_mm/io/SceneHtml.h"
 #include "ompl_mm/io/SceneSvg.h"
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
@@ -94,6 +95,7 @@ namespace
         // open the outputs first: a bad path should not cost a whole planning run
         ompl_core::OutputFile json(options.common.json);
         ompl_core::OutputFile svg(options.common.svg);
+        ompl_core::OutputFile html(options.common.html);
         ompl_core::OutputFile path(options.path);
 
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
@@ -116,6 +118,13 @@ namespace
         {
             ompl_mm::writeSceneSvg(svg.stream(), setup, solved ? &setup.manipulationPath() : nullptr);
             svg.commit();
+        }
+        if (html.isOpen())
+        {
+            ompl_mm::writeSceneHtml(html.stream(), setup, solved ? &setup.manipulationPath() : nullptr,
+                                    scene.name + " · " + options.common.planner + " · seed " +
+                                        std::to_string(options.common.seed));
+            html.commit();
         }
         if (path.isOpen())
         {

@@ -10,6 +10,7 @@
 #include "ompl_phys/control/PhysicsSetup.h"
 #include "ompl_phys/io/PhysicsPathFile.h"
 #include "ompl_phys/io/PhysicsRunResult.h"
+#include "ompl_phys/io/PhysicsSceneHtml.h"
 #include "ompl_phys/io/PhysicsSceneSvg.h"
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
 
@@ -91,6 +92,7 @@ namespace
         // open the outputs first: a bad path should not cost a whole planning run
         ompl_core::OutputFile json(options.common.json);
         ompl_core::OutputFile svg(options.common.svg);
+        ompl_core::OutputFile html(options.common.html);
         ompl_core::OutputFile path(options.path);
 
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
@@ -121,6 +123,13 @@ namespace
                                             scene.name + " · " + options.common.planner + " · seed " +
                                                 std::to_string(options.common.seed));
             svg.commit();
+        }
+        if (html.isOpen())
+        {
+            ompl_phys::writePhysicsSceneHtml(html.stream(), setup, result,
+                                             scene.name + " · " + options.common.planner + " · seed " +
+                                                 std::to_string(options.common.seed));
+            html.commit();
         }
         if (path.isOpen())
         {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/PlanViewer.h"
 #include "ompl_core/run/CommandLine.h"
 #include "ompl_core/run/ExitStatus.h"
 #include "ompl_core/run/ParameterSetting.h"
@@ -32,7 +33,7 @@ namespace apps
         long long seed{1};                ///< checked to be in [1, 2^32 - 1]
         double timeLimit{-1.0};           ///< seconds; negative: the scene's
         std::vector<std::string> params;  ///< NAME=VALUE, applied after the scene's parameters
-        std::string json, svg;
+        std::string json, svg, html;
         bool verbose{false};
         bool listParams{false};  ///< print the planner's parameters instead of planning
 
@@ -90,7 +91,10 @@ namespace apps
             "early and still writes its results)")("json", po::value(&options.json),
                                                    "write the result as JSON to this file")(
             "svg", po::value(&options.svg), "write a top-down picture of the plan to this SVG file")(
-            "verbose,v", po::bool_switch(&options.verbose), "print OMPL's informational messages")(
+            "html", po::value(&options.html),
+            "write a 3-D view of the plan, animated, to this self-contained HTML file (needs three.js from "
+            "Debian's libjs-three)")("verbose,v", po::bool_switch(&options.verbose),
+                                     "print OMPL's informational messages")(
             "list-params", po::bool_switch(&options.listParams),
             "print the planner's parameters (values after the scene's and --param settings, ranges) and "
             "exit");
@@ -103,6 +107,8 @@ namespace apps
             return false;
         }
         checkSeedAndTimeLimit(options.seed, vm.count("time-limit") > 0, options.timeLimit);
+        if (!options.html.empty())
+            ompl_core::requireThreeJs();  // before planning, not after it
         return true;
     }
 

@@ -2,6 +2,7 @@
 
 #include "ompl_core/io/SvgCanvas.h"
 #include "ompl_core/io/TextFormat.h"
+#include "ompl_mm/io/PlanColours.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Exception.h>
@@ -26,16 +27,9 @@ namespace ompl_mm
         constexpr unsigned int SUB_STEPS = 20;
         constexpr double HEIGHT_QUANTUM = 1e-6;
 
-        const char *const OBSTACLE_COLOUR = "#555555";
-        const char *const SURFACE_COLOUR = "#e2e2e2";
         const char *const ARROW_COLOUR = "#8b0000";
-        const char *const ROBOT_COLOUR = "#333333";
         const std::string ARROW_STYLE = std::string("stroke=\"") + ARROW_COLOUR +
                                         R"svg(" stroke-width="2" marker-end="url(#arrowhead)")svg";
-        // object colours avoid the four primitive colours so objects and tool path stay apart
-        const std::vector<const char *> OBJECT_PALETTE = {"#9467bd", "#8c564b", "#e377c2", "#bcbd22",
-                                                          "#17becf", "#393b79", "#637939", "#8c6d31",
-                                                          "#843c39", "#7b4173"};
 
         /** An upright outline seen from above: a polygon, or a circle when radius > 0. */
         struct Footprint
@@ -92,27 +86,6 @@ namespace ompl_mm
             const Eigen::Vector2d margin = Eigen::Vector2d::Constant(MARGIN_FRACTION * 2.0 * half.maxCoeff());
             return ompl_core::SvgCanvas(
                 Eigen::AlignedBox2d(box.center() - half - margin, box.center() + half + margin), LAYOUT);
-        }
-
-        const char *kindColour(PrimitiveKind kind)
-        {
-            switch (kind)
-            {
-                case PrimitiveKind::Transit:
-                    return "#1f77b4";
-                case PrimitiveKind::Push:
-                    return "#d62728";
-                case PrimitiveKind::Pickup:
-                    return "#2ca02c";
-                case PrimitiveKind::Transfer:
-                    return "#ff7f0e";
-            }
-            return "#000000";
-        }
-
-        const char *objectColour(std::size_t object)
-        {
-            return OBJECT_PALETTE[object % OBJECT_PALETTE.size()];
         }
 
         /** Footprint of an upright shape centred at (x, y) turned by yaw: a rectangle or a circle. */
@@ -380,7 +353,8 @@ namespace ompl_mm
         {
             for (const ToolSegment &segment : picture.segments)
             {
-                out << "<polyline class=\"tool-path\" fill=\"none\" stroke=\"" << kindColour(segment.kind)
+                out << "<polyline class=\"tool-path\" fill=\"none\" stroke=\""
+                    << primitiveColour(segment.kind)
                     << R"(" stroke-width="2.5" stroke-linecap="round" stroke-linejoin="round" points=")"
                     << canvas.pointList(segment.points) << "\"><title>" << primitiveKindName(segment.kind)
                     << "</title></polyline>\n";
@@ -489,7 +463,7 @@ namespace ompl_mm
             {
                 ompl_core::SvgCanvas::writeLine(
                     out, {x, y}, {x + 24, y},
-                    std::string("stroke=\"") + kindColour(kind) + "\" stroke-width=\"2.5\"");
+                    std::string("stroke=\"") + primitiveColour(kind) + "\" stroke-width=\"2.5\"");
                 ompl_core::SvgCanvas::writeText(out, {x + 30, y + 4}, primitiveKindName(kind), text);
                 x += 100.0;
             }

@@ -1,5 +1,7 @@
 #include "ompl_phys/io/PhysicsSceneSvg.h"
 
+#include "ompl_phys/io/PhysicsColours.h"
+
 #include "ompl_core/io/SvgCanvas.h"
 #include "ompl_phys/knowledge/Footprint.h"
 
@@ -15,12 +17,6 @@ namespace ompl_phys
         constexpr double CIRCLE_SEGMENTS = 32;
         /** A body whose centre moved less than this is not drawn as pushed, m. */
         constexpr double MOVED_THRESHOLD = 0.01;
-
-        const char *const FIXED_COLOUR = "#666666";
-        const char *const ROBOT_COLOUR = "#1f77b4";
-        const char *const GOAL_COLOUR = "#2ca02c";
-        const std::vector<const char *> BODY_PALETTE = {"#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
-                                                        "#bcbd22", "#17becf", "#d62728"};
 
         /** The outline of a shape at (position, yaw) as floor points. */
         std::vector<Eigen::Vector2d> outline(const PhysicsShape &shape, const Eigen::Vector2d &position,
@@ -110,7 +106,7 @@ namespace ompl_phys
                                  {floorHalf.x(), -floorHalf.y()},
                                  floorHalf,
                                  {-floorHalf.x(), floorHalf.y()}},
-                                "fill=\"#f4f1ea\" stroke=\"#cccccc\"");
+                                std::string("fill=\"") + FLOOR_COLOUR + "\" stroke=\"#cccccc\"");
         circle(
             out, canvas, scene.goal.centre, scene.goal.radius,
             std::string("fill=\"") + GOAL_COLOUR + "\" fill-opacity=\"0.3\" stroke=\"" + GOAL_COLOUR + "\"");
@@ -128,7 +124,7 @@ namespace ompl_phys
         for (std::size_t i = 1; i < world.movingBodyCount(); ++i)
         {
             const PhysicsBody &body = scene.bodies[world.sceneBodyOf(i)];
-            const std::string colour = BODY_PALETTE[(i - 1) % BODY_PALETTE.size()];
+            const std::string colour = bodyColour(i - 1);
             drawBody(out, canvas, body, start[i],
                      "fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"2\" stroke-dasharray=\"5,3\"");
             drawBody(out, canvas, body, end[i],
