@@ -1,0 +1,183 @@
+// Inverse kinematics on the protocol IK libraries publish: random joint configurations uniformly within
+// the limits, their tool poses by forward kinematics, then full 6-D IK of each pose to 1e-5, seeded from
+// the middle of the joint ranges, at most 5 ms per query. Reports the solve rate and the mean time per
+// query (failures included) for our IkSolver and, on the same poses, Orocos KDL's ChainIkSolverPos_NR_JL
+// and ChainIkSolverPos_LMA (KDL chains built from the same RobotModel).
+//
+// Usage: bench_ik [URDF] [--queries N] [--tip LINK] [--seed S]   (default: scenes/robots/kuka_lwr.urdf,
+// 10000 queries, tip "tool", seed 1)
+#include "ompl_mm/robot/IkSolver.h"
+#include "ompl_mm/robot/RobotModel.h"
+
+#include <kdl/chain.hpp>
+#include <kdl/chainfksolverpos_recursive.hpp>
+#include <kdl/chainiksolverpos_lma.hpp>
+#include <kdl/chainiksolverpos_nr_jl.hpp>
+#include <kdl/chainiksolvervel_pinv.hpp>
+
+#include <ompl/util/RandomNumbers.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace
+{
+    constexpr double TOLERANCE = 1e-5;
+    constexpr double TIME_LIMIT = 0.005;
+
+    KDL::Frame kdlFrame(const Eigen::Isometry3d &pose)
+    {
+        const Eigen::Matrix3d r = pose.linear();
+        return KDL::Frame(
+            KDL::Rotation(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)),
+            KDL::Vector(pose.translation().x(), pose.translation().y(), pose.translation().z()));
+    }
+
+    /** The same chain for KDL: a fixed segment to the first joint, then one segment per joint that
+        carries the fixed transform to the next joint (or the tool). */
+    KDL::Chain kdlChain(const ompl_mm::KinematicChain &chain)
+    {
+        KDL::Chain kdl;
+        kdl.addSegment(KDL::Segment(KDL::Joint(KDL::Joint::None), kdlFrame(chain.before(0))));
+        for (unsigned int i = 0; i < chain.size(); ++i)
+        {
+            const Eigen::Vector3d &a = chain.axis(i);
+            const KDL::Joint joint("j" + std::to_string(i), KDL::Vector::Zero(),
+                                   KDL::Vector(a.x(), a.y(), a.z()),
+                                   chain.prismatic(i) ? KDL::Joint::TransAxis : KDL::Joint::RotAxis);
+            kdl.addSegment(
+                KDL::Segment(joint, kdlFrame(i + 1 < chain.size() ? chain.before(i + 1) : chain.after())));
+        }
+        return kdl;
+    }
+
+    struct Result
+    {
+        unsigned int solved{0};
+        double seconds{0.0};
+    };
+
+    /** Times solve on every target; it says whether it reached the target within the limit. */
+    Result measure(const std::vector<Eigen::Isometry3d> &targets,
+                   const std::function<bool(const Eigen::Isometry3d &)> &solve)
+    {
+        Result result;
+        for (const Eigen::Isometry3d &target : targets)
+        {
+            const auto start = std::chrono::steady_clock::now();
+            const bool ok = solve(target);
+            const double seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            result.seconds += seconds;
+            result.solved += ok && seconds <= TIME_LIMIT ? 1 : 0;
+        }
+        return result;
+    }
+
+    void print(const char *name, const Result &result, std::size_t queries)
+    {
+        std::printf("| %-32s | %8.2f %% | %8.3f ms |\n", name,
+                    100.0 * result.solved / static_cast<double>(queries),
+                    1000.0 * result.seconds / static_cast<double>(queries));
+    }
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    std::string urdf = std::string(OMPL_MM_SCENES_DIR) + "/robots/kuka_lwr.urdf";
+    std::string tip = "tool";
+    std::size_t queries = 10000;
+    std::uint_fast32_t seed = 1;
+    unsigned int iterations = 0;  // 0: the solver's default
+    double damping = -1.0, posture = -1.0;
+    for (int i = 1; i < argc; ++i)
+    {
+        if (!std::strcmp(argv[i], "--queries") && i + 1 < argc)
+            queries = std::stoul(argv[++i]);
+        else if (!std::strcmp(argv[i], "--tip") && i + 1 < argc)
+            tip = argv[++i];
+        else if (!std::strcmp(argv[i], "--seed") && i + 1 < argc)
+            seed = std::stoul(argv[++i]);
+        else if (!std::strcmp(argv[i], "--iterations") && i + 1 < argc)
+            iterations = std::stoul(argv[++i]);
+        else if (!std::strcmp(argv[i], "--damping") && i + 1 < argc)
+            damping = std::stod(argv[++i]);
+        else if (!std::strcmp(argv[i], "--posture") && i + 1 < argc)
+            posture = std::stod(argv[++i]);
+        else
+            urdf = argv[i];
+    }
+    const ompl_mm::RobotModel robot = ompl_mm::RobotModel::fromUrdfFile(urdf);
+    const ompl_mm::KinematicChain chain(robot, robot.linkIndex(tip));
+    const Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
+    const unsigned int n = chain.size();
+
+    ompl::RNG rng(seed);
+    std::vector<double> middle(robot.dof(), 0.0);
+    for (unsigned int i = 0; i < n; ++i)
+        middle[chain.variable(i)] = 0.5 * (chain.lower(i) + chain.upper(i));
+    std::vector<Eigen::Isometry3d> targets;
+    for (std::size_t k = 0; k < queries; ++k)
+    {
+        std::vector<double> q = middle;
+        for (unsigned int i = 0; i < n; ++i)
+            q[chain.variable(i)] = rng.uniformReal(chain.lower(i), chain.upper(i));
+        targets.push_back(chain.toolPose(q.data(), base));
+    }
+    std::printf("%s, tip %s: %u joints, %zu random reachable poses, full 6-D pose to %g, %g ms per query\n\n",
+                urdf.c_str(), tip.c_str(), n, queries, TOLERANCE, 1000 * TIME_LIMIT);
+    std::printf("| solver                           | solved     | mean time   |\n|---|---|---|\n");
+
+    ompl_mm::IkSolver ours(chain, base);
+    ours.tolerance = TOLERANCE;
+    ours.timeLimit = TIME_LIMIT;
+    if (iterations > 0)
+        ours.iterations = iterations;
+    if (damping >= 0.0)
+        ours.damping = damping;
+    if (posture >= 0.0)
+        ours.postureGain = posture;
+    ompl::RNG restarts(seed + 1000003);  // not the poses' sequence: a restart must not draw a target's joints
+    print("ompl_mm IkSolver",
+          measure(targets,
+                  [&](const Eigen::Isometry3d &target)
+                  {
+                      std::vector<double> q = middle;
+                      return ours.solve(target, ompl_mm::IkTask::Pose6D, q.data(), restarts);
+                  }),
+          queries);
+
+    const KDL::Chain kdl = kdlChain(chain);
+    KDL::JntArray lower(n), upper(n), seedValues(n), solution(n);
+    for (unsigned int i = 0; i < n; ++i)
+    {
+        lower(i) = chain.lower(i);
+        upper(i) = chain.upper(i);
+        seedValues(i) = middle[chain.variable(i)];
+    }
+    KDL::ChainFkSolverPos_recursive fk(kdl);
+    KDL::ChainIkSolverVel_pinv velocity(kdl);
+    KDL::ChainIkSolverPos_NR_JL newton(kdl, lower, upper, fk, velocity, 100, TOLERANCE);
+    print("KDL ChainIkSolverPos_NR_JL",
+          measure(targets, [&](const Eigen::Isometry3d &target)
+                  { return newton.CartToJnt(seedValues, kdlFrame(target), solution) >= 0; }),
+          queries);
+    KDL::ChainIkSolverPos_LMA lma(kdl, TOLERANCE);
+    print("KDL ChainIkSolverPos_LMA",
+          measure(targets,
+                  [&](const Eigen::Isometry3d &target)
+                  {
+                      if (lma.CartToJnt(seedValues, kdlFrame(target), solution) < 0)
+                          return false;
+                      for (unsigned int i = 0; i < n; ++i)
+                          if (solution(i) < lower(i) || solution(i) > upper(i))
+                              return false;  // LMA knows no limits: a solution outside them is no solution
+                      return true;
+                  }),
+          queries);
+    return 0;
+}

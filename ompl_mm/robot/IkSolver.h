@@ -1,0 +1,102 @@
+#pragma once
+
+#include "ompl_mm/robot/KinematicChain.h"
+
+#include <ompl/base/GenericParam.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <chrono>
+#include <vector>
+
+namespace ompl_mm
+{
+    /** Which parts of a tool pose inverse kinematics must reach. */
+    enum class IkTask
+    {
+        Pose6D,         ///< position and orientation
+        Pose5DFreeYaw,  ///< position and orientation up to a rotation about the world's vertical
+                        ///< (grasps of upright objects)
+        Position3D,     ///< position only
+    };
+
+    /** Inverse kinematics of a kinematic chain by damped least squares: each iteration steps the
+        chain's joints by J^T (J J^T + lambda^2 I)^-1 e towards the target (e: the task's position
+        and rotation error, world frame; lambda = damping * min(1, |e|)), plus, far from the target,
+        a null-space step towards the middle of the joint ranges, capped at maxStep per joint and
+        clamped to the limits (continuous joints wrap).
+        When an attempt has not converged after `iterations`, it restarts from random joint values
+        within the limits, at most `restarts` times and within `timeLimit`. Deterministic for a
+        given random generator state. Holds its own work space, so the hot path allocates nothing;
+        use one solver per thread. Its parameters are declared (params()): ik_tolerance,
+        ik_iterations, ik_restarts, ik_damping, ik_time_limit. */
+    class IkSolver
+    {
+    public:
+        /** Solves for chain's tool frame, the robot's root at base. */
+        IkSolver(KinematicChain chain, const Eigen::Isometry3d &base);
+
+        /** Finds joint values that put the tool at target for task, starting from the chain's
+            values in q (the whole robot's joint vector; other joints are left as they are).
+            @returns true with q holding a solution within the limits and within tolerance of the
+            target; false with q unchanged. rng draws the restarts. */
+        bool solve(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng);
+
+        /** The task error of the chain's values in q: position and rotation error vector (world
+            frame; radians about each axis), the rotation about the world vertical left out for
+            Pose5DFreeYaw and the rotation for Position3D. */
+        double error(const Eigen::Isometry3d &target, IkTask task, const double *q) const;
+
+        /** The chain solved for. */
+        const KinematicChain &chain() const { return chain_; }
+
+        /** Largest error that counts as reached (metres and radians together); 1e-5 by default. */
+        double tolerance{1e-5};
+        /** Iterations of one attempt; 20 by default: an attempt that has not converged by then
+            seldom does, and a restart is cheaper (benchmarks/bench_ik). */
+        unsigned int iterations{20};
+        /** Attempts from random joint values after the first; 100 by default. */
+        unsigned int restarts{100};
+        /** Damping of the least-squares step while the error is 1 or more; it shrinks with the error
+            (damping times the error), so steps are steady far from the target and converge fast
+            close to it. 0.1 by default (benchmarks/bench_ik). */
+        double damping{0.1};
+        /** Largest change of a joint in one iteration, radians or metres; 30 deg by default. */
+        double maxStep{0.5235987755982988};
+        /** Gain of the step towards the middle of the joint ranges within the null space. */
+        double postureGain{0.05};
+        /** Seconds a solve may take; infinite by default. */
+        double timeLimit{1e300};
+
+        /** The declared parameters (OMPL's ParamSet): ik_tolerance, ik_iterations, ik_restarts,
+            ik_damping, ik_time_limit, with their ranges. */
+        ompl::base::ParamSet &params() { return params_; }
+
+        /** Iterations the last solve() took, over all attempts. */
+        unsigned int lastIterations() const { return lastIterations_; }
+
+    private:
+        using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+        /** The 6-vector error (position, rotation) of tool pose current, masked for task. */
+        static Vector6d taskError(const Eigen::Isometry3d &target, const Eigen::Isometry3d &current,
+                                  IkTask task);
+
+        /** One attempt from the chain's values in work_; true when it converged. */
+        bool attempt(const Eigen::Isometry3d &target, IkTask task,
+                     const std::chrono::steady_clock::time_point &end);
+
+        KinematicChain chain_;
+        Eigen::Isometry3d base_;
+        ompl::base::ParamSet params_;
+        unsigned int lastIterations_{0};
+        // work space, sized once
+        std::vector<double> work_;  ///< the whole robot's joint vector being solved
+        Eigen::Matrix<double, 6, Eigen::Dynamic> jacobian_;
+        Eigen::MatrixXd inverse_;    ///< damped pseudo-inverse, size() x 6
+        Eigen::MatrixXd nullSpace_;  ///< size() x size()
+        Eigen::VectorXd step_, posture_;
+    };
+}  // namespace ompl_mm

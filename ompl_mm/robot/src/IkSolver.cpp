@@ -1,0 +1,145 @@
+#include "ompl_mm/robot/IkSolver.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ompl_mm
+{
+    namespace
+    {
+        constexpr double PI = 3.14159265358979323846;
+        /** Below this task error the step no longer pulls towards the middle of the joint ranges. */
+        constexpr double POSTURE_ERROR = 1e-3;
+
+        double wrapAngle(double angle)
+        {
+            return std::remainder(angle, 2.0 * PI);
+        }
+    }  // namespace
+
+    IkSolver::IkSolver(KinematicChain chain, const Eigen::Isometry3d &base)
+        : chain_(std::move(chain)), base_(base)
+    {
+        unsigned int variables = 0;
+        for (unsigned int i = 0; i < chain_.size(); ++i)
+            variables = std::max(variables, chain_.variable(i) + 1);
+        work_.assign(variables, 0.0);
+        const auto n = static_cast<Eigen::Index>(chain_.size());
+        jacobian_.resize(6, n);
+        inverse_.resize(n, 6);
+        nullSpace_.resize(n, n);
+        step_.resize(n);
+        posture_.resize(n);
+        params_.declareParam<double>(
+            "ik_tolerance", [this](double v) { tolerance = v; }, [this] { return tolerance; });
+        params_["ik_tolerance"].setRangeSuggestion("1e-9:1e-6:0.01");
+        params_.declareParam<unsigned int>(
+            "ik_iterations", [this](unsigned int v) { iterations = v; }, [this] { return iterations; });
+        params_["ik_iterations"].setRangeSuggestion("1:1:10000");
+        params_.declareParam<unsigned int>(
+            "ik_restarts", [this](unsigned int v) { restarts = v; }, [this] { return restarts; });
+        params_["ik_restarts"].setRangeSuggestion("0:1:100000");
+        params_.declareParam<double>(
+            "ik_damping", [this](double v) { damping = v; }, [this] { return damping; });
+        params_["ik_damping"].setRangeSuggestion("0.:1e-4:1.");
+        params_.declareParam<double>(
+            "ik_time_limit", [this](double v) { timeLimit = v; }, [this] { return timeLimit; });
+        params_["ik_time_limit"].setRangeSuggestion("0.:0.001:1e300");
+    }
+
+    IkSolver::Vector6d IkSolver::taskError(const Eigen::Isometry3d &target, const Eigen::Isometry3d &current,
+                                           IkTask task)
+    {
+        Vector6d error;
+        error.head<3>() = target.translation() - current.translation();
+        const Eigen::AngleAxisd rotation(target.linear() * current.linear().transpose());
+        error.tail<3>() = rotation.angle() * rotation.axis();
+        if (task == IkTask::Pose5DFreeYaw)
+            error[5] = 0.0;  // a residual rotation about the vertical is allowed
+        else if (task == IkTask::Position3D)
+            error.tail<3>().setZero();
+        return error;
+    }
+
+    double IkSolver::error(const Eigen::Isometry3d &target, IkTask task, const double *q) const
+    {
+        return taskError(target, chain_.toolPose(q, base_), task).norm();
+    }
+
+    bool IkSolver::attempt(const Eigen::Isometry3d &target, IkTask task,
+                           const std::chrono::steady_clock::time_point &end)
+    {
+        const unsigned int n = chain_.size();
+        for (unsigned int it = 0; it < iterations; ++it)
+        {
+            ++lastIterations_;
+            const Eigen::Isometry3d pose = chain_.toolPoseAndJacobian(work_.data(), base_, jacobian_);
+            const Vector6d error = taskError(target, pose, task);
+            if (error.norm() < tolerance)
+                return true;
+            if (std::chrono::steady_clock::now() > end)
+                return false;
+            // the rows the task leaves free take no part in the step
+            if (task == IkTask::Pose5DFreeYaw)
+                jacobian_.row(5).setZero();
+            else if (task == IkTask::Position3D)
+                jacobian_.bottomRows<3>().setZero();
+            Eigen::Matrix<double, 6, 6> normal = jacobian_ * jacobian_.transpose();
+            // less damping as the error shrinks: fast final convergence, steady far from the target
+            const double lambda = damping * std::min(1.0, error.norm());
+            normal.diagonal().array() += lambda * lambda;
+            inverse_.noalias() = normal.ldlt().solve(jacobian_).transpose();
+            step_.noalias() = inverse_ * error;
+            // towards the middle of the joint ranges, in the (damped) null space of the task; close
+            // to the target it would keep the error above what the damping leaks into the task
+            if (error.norm() > POSTURE_ERROR)
+            {
+                for (unsigned int i = 0; i < n; ++i)
+                    posture_[i] = chain_.continuous(i)
+                                      ? 0.0
+                                      : postureGain * (0.5 * (chain_.lower(i) + chain_.upper(i)) -
+                                                       work_[chain_.variable(i)]);
+                nullSpace_.noalias() = -inverse_ * jacobian_;
+                nullSpace_.diagonal().array() += 1.0;
+                step_.noalias() += nullSpace_ * posture_;
+            }
+            const double largest = step_.cwiseAbs().maxCoeff();
+            if (largest > maxStep)
+                step_ *= maxStep / largest;
+            for (unsigned int i = 0; i < n; ++i)
+            {
+                double &value = work_[chain_.variable(i)];
+                value += step_[i];
+                value = chain_.continuous(i) ? wrapAngle(value)
+                                             : std::clamp(value, chain_.lower(i), chain_.upper(i));
+            }
+        }
+        return false;
+    }
+
+    bool IkSolver::solve(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng)
+    {
+        const auto end = std::chrono::steady_clock::now() +
+                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                             std::chrono::duration<double>(std::min(timeLimit, 1e9)));
+        lastIterations_ = 0;
+        const unsigned int n = chain_.size();
+        for (unsigned int i = 0; i < n; ++i)
+            work_[chain_.variable(i)] = q[chain_.variable(i)];
+        for (unsigned int a = 0; a <= restarts; ++a)
+        {
+            if (a > 0)
+                for (unsigned int i = 0; i < n; ++i)
+                    work_[chain_.variable(i)] = rng.uniformReal(chain_.lower(i), chain_.upper(i));
+            if (attempt(target, task, end))
+            {
+                for (unsigned int i = 0; i < n; ++i)
+                    q[chain_.variable(i)] = work_[chain_.variable(i)];
+                return true;
+            }
+            if (std::chrono::steady_clock::now() > end)
+                return false;
+        }
+        return false;
+    }
+}  // namespace ompl_mm

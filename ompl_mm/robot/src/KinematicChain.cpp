@@ -1,0 +1,77 @@
+#include "ompl_mm/robot/KinematicChain.h"
+
+#include <ompl/util/Exception.h>
+
+#include <algorithm>
+
+namespace ompl_mm
+{
+    KinematicChain::KinematicChain(const RobotModel &robot, int tip, const Eigen::Isometry3d &tool)
+    {
+        if (tip < 0 || tip >= static_cast<int>(robot.links().size()))
+            throw ompl::Exception("KinematicChain", "no link with index " + std::to_string(tip));
+        std::vector<int> path;  // tip first
+        for (int link = tip; robot.links()[link].parent >= 0; link = robot.links()[link].parent)
+            path.push_back(link);
+        std::reverse(path.begin(), path.end());
+        Eigen::Isometry3d pending = Eigen::Isometry3d::Identity();
+        for (const int link : path)
+        {
+            const Joint &joint = robot.joints()[robot.links()[link].joint];
+            pending = pending * joint.origin;
+            if (joint.type == Joint::Type::Fixed)
+                continue;
+            joints_.push_back({pending, joint.axis, joint.type == Joint::Type::Prismatic,
+                               joint.type == Joint::Type::Continuous,
+                               static_cast<unsigned int>(joint.variable), joint.lower, joint.upper});
+            pending.setIdentity();
+        }
+        after_ = pending * tool;
+    }
+
+    Eigen::Isometry3d KinematicChain::motion(const ChainJoint &joint, double q)
+    {
+        if (joint.prismatic)
+            return Eigen::Isometry3d(Eigen::Translation3d(q * joint.axis));
+        return Eigen::Isometry3d(Eigen::AngleAxisd(q, joint.axis));
+    }
+
+    Eigen::Isometry3d KinematicChain::toolPose(const double *q, const Eigen::Isometry3d &base) const
+    {
+        Eigen::Isometry3d frame = base;
+        for (const ChainJoint &joint : joints_)
+            frame = frame * joint.before * motion(joint, q[joint.variable]);
+        return frame * after_;
+    }
+
+    Eigen::Isometry3d KinematicChain::toolPoseAndJacobian(
+        const double *q, const Eigen::Isometry3d &base,
+        Eigen::Ref<Eigen::Matrix<double, 6, Eigen::Dynamic>> jacobian) const
+    {
+        // first pass: each joint's world origin (rows 0-2) and axis (rows 3-5), and the tool pose
+        Eigen::Isometry3d frame = base;
+        for (std::size_t i = 0; i < joints_.size(); ++i)
+        {
+            const ChainJoint &joint = joints_[i];
+            frame = frame * joint.before;
+            jacobian.col(static_cast<Eigen::Index>(i)).head<3>() = frame.translation();
+            jacobian.col(static_cast<Eigen::Index>(i)).tail<3>() = frame.linear() * joint.axis;
+            frame = frame * motion(joint, q[joint.variable]);
+        }
+        const Eigen::Isometry3d tool = frame * after_;
+        // second pass: a turning joint moves the tool point by axis x (point - origin)
+        for (std::size_t i = 0; i < joints_.size(); ++i)
+        {
+            auto column = jacobian.col(static_cast<Eigen::Index>(i));
+            const Eigen::Vector3d axis = column.tail<3>();
+            if (joints_[i].prismatic)
+            {
+                column.head<3>() = axis;
+                column.tail<3>().setZero();
+            }
+            else
+                column.head<3>() = axis.cross(tool.translation() - column.head<3>());
+        }
+        return tool;
+    }
+}  // namespace ompl_mm

@@ -1,0 +1,154 @@
+// Tests for IkSolver on the KUKA LWR-like arm: full 6-D IK of 2,000 random reachable poses from the
+// middle of the joint ranges (every answer within the limits and 1e-5 of its target, at least 99.9 %
+// solved, bounded by iterations), the 5-D task with the yaw free and the 3-D task, determinism, an
+// unreachable target leaving the joints as they were, and the declared parameters.
+#include "ompl_mm/robot/IkSolver.h"
+
+#include "common/InputErrors.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace ompl_mm;
+
+namespace
+{
+    const std::string KUKA = std::string(OMPL_MM_SCENES_DIR) + "/robots/kuka_lwr.urdf";
+
+    class LwrIk : public ::testing::Test
+    {
+    protected:
+        LwrIk()
+            : robot_(RobotModel::fromUrdfFile(KUKA)),
+              solver_(KinematicChain(robot_, robot_.linkIndex("tool")), base_)
+        {
+        }
+
+        const KinematicChain &chain() const { return solver_.chain(); }
+
+        std::vector<double> middle() const
+        {
+            std::vector<double> q(robot_.dof());
+            for (unsigned int i = 0; i < chain().size(); ++i)
+                q[chain().variable(i)] = 0.5 * (chain().lower(i) + chain().upper(i));
+            return q;
+        }
+
+        std::vector<double> random(ompl::RNG &rng) const
+        {
+            std::vector<double> q(robot_.dof());
+            for (unsigned int i = 0; i < chain().size(); ++i)
+                q[chain().variable(i)] = rng.uniformReal(chain().lower(i), chain().upper(i));
+            return q;
+        }
+
+        bool withinLimits(const std::vector<double> &q) const
+        {
+            for (unsigned int i = 0; i < chain().size(); ++i)
+                if (q[chain().variable(i)] < chain().lower(i) || q[chain().variable(i)] > chain().upper(i))
+                    return false;
+            return true;
+        }
+
+        RobotModel robot_;
+        Eigen::Isometry3d base_{Eigen::Translation3d(0.1, -0.2, 0.3)};
+        IkSolver solver_;
+    };
+}  // namespace
+
+TEST_F(LwrIk, SolvesRandomReachablePosesWithinLimitsAndTolerance)
+{
+    ompl::RNG poses(11), restarts(12);
+    unsigned int solved = 0;
+    const unsigned int count = 2000;
+    for (unsigned int k = 0; k < count; ++k)
+    {
+        const Eigen::Isometry3d target = chain().toolPose(random(poses).data(), base_);
+        std::vector<double> q = middle();
+        if (!solver_.solve(target, IkTask::Pose6D, q.data(), restarts))
+            continue;
+        ++solved;
+        EXPECT_TRUE(withinLimits(q)) << "query " << k;
+        const Eigen::Isometry3d reached = chain().toolPose(q.data(), base_);
+        const Eigen::AngleAxisd turn(target.linear() * reached.linear().transpose());
+        EXPECT_LT(std::hypot((target.translation() - reached.translation()).norm(), turn.angle()), 1e-5)
+            << "query " << k;
+    }
+    EXPECT_GE(solved, 1998u) << "at least 99.9 % of " << count;
+}
+
+TEST_F(LwrIk, FiveDimensionalTaskLeavesOnlyTheYawAboutTheVerticalFree)
+{
+    ompl::RNG poses(21), restarts(22);
+    for (int k = 0; k < 100; ++k)
+    {
+        const Eigen::Isometry3d reachable = chain().toolPose(random(poses).data(), base_);
+        // the same pose turned about the world vertical through the tool point: reachable or not,
+        // the 5-D task accepts any yaw, so the reachable one is a solution
+        const Eigen::Isometry3d target = Eigen::Translation3d(reachable.translation()) *
+                                         Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ()) *
+                                         Eigen::Translation3d(-reachable.translation()) * reachable;
+        std::vector<double> q = middle();
+        ASSERT_TRUE(solver_.solve(target, IkTask::Pose5DFreeYaw, q.data(), restarts)) << "query " << k;
+        const Eigen::Isometry3d reached = chain().toolPose(q.data(), base_);
+        EXPECT_LT((reached.translation() - target.translation()).norm(), 1e-5);
+        // the tool's axes differ from the target's by a turn about the world vertical only
+        const Eigen::Matrix3d residual = target.linear() * reached.linear().transpose();
+        EXPECT_NEAR(residual(2, 2), 1.0, 1e-9);
+        EXPECT_LT(solver_.error(target, IkTask::Pose5DFreeYaw, q.data()), 1e-5);
+    }
+}
+
+TEST_F(LwrIk, PositionTaskReachesThePointWhateverTheOrientation)
+{
+    ompl::RNG restarts(31);
+    const Eigen::Isometry3d target(Eigen::Translation3d(0.6, -0.1, 0.5) *
+                                   Eigen::AngleAxisd(2.0, Eigen::Vector3d::UnitX()));
+    std::vector<double> q = middle();
+    ASSERT_TRUE(solver_.solve(target, IkTask::Position3D, q.data(), restarts));
+    EXPECT_LT((chain().toolPose(q.data(), base_).translation() - target.translation()).norm(), 1e-5);
+    EXPECT_GT(solver_.error(target, IkTask::Pose6D, q.data()), 0.1) << "the orientation was free";
+}
+
+TEST_F(LwrIk, SameRandomGeneratorStateGivesTheSameSolution)
+{
+    ompl::RNG poses(41);
+    const Eigen::Isometry3d target = chain().toolPose(random(poses).data(), base_);
+    std::vector<double> first = middle(), second = middle();
+    ompl::RNG a(7), b(7);
+    ASSERT_TRUE(solver_.solve(target, IkTask::Pose6D, first.data(), a));
+    ASSERT_TRUE(solver_.solve(target, IkTask::Pose6D, second.data(), b));
+    EXPECT_EQ(first, second);
+}
+
+TEST_F(LwrIk, UnreachableTargetFailsAndLeavesTheJoints)
+{
+    ompl::RNG restarts(51);
+    solver_.restarts = 20;
+    const Eigen::Isometry3d far(Eigen::Translation3d(3.0, 0.0, 0.5));
+    std::vector<double> q = middle();
+    const std::vector<double> before = q;
+    EXPECT_FALSE(solver_.solve(far, IkTask::Position3D, q.data(), restarts));
+    EXPECT_EQ(q, before);
+    EXPECT_EQ(solver_.lastIterations(), 21u * solver_.iterations) << "every attempt ran out";
+}
+
+TEST_F(LwrIk, ParametersAreDeclaredWithRanges)
+{
+    ompl::base::ParamSet &params = solver_.params();
+    EXPECT_TRUE(params.setParam("ik_tolerance", "0.0001"));
+    EXPECT_EQ(solver_.tolerance, 1e-4);
+    EXPECT_TRUE(params.setParam("ik_iterations", "40"));
+    EXPECT_EQ(solver_.iterations, 40u);
+    EXPECT_TRUE(params.setParam("ik_restarts", "3"));
+    EXPECT_EQ(solver_.restarts, 3u);
+    EXPECT_TRUE(params.setParam("ik_damping", "0.05"));
+    EXPECT_EQ(solver_.damping, 0.05);
+    EXPECT_TRUE(params.setParam("ik_time_limit", "0.002"));
+    EXPECT_EQ(solver_.timeLimit, 0.002);
+    for (const char *name : {"ik_tolerance", "ik_iterations", "ik_restarts", "ik_damping", "ik_time_limit"})
+        EXPECT_FALSE(params.getParam(name)->getRangeSuggestion().empty()) << name;
+}
