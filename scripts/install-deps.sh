@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build pkg-config python3
   libompl-dev libfcl-dev libccd-dev libeigen3-dev liburdfdom-dev libtinyxml2-dev
   libboost-program-options-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
-  libode-dev libgtest-dev librsvg2-bin doxygen
+  libode-dev libassimp-dev libgtest-dev librsvg2-bin doxygen
   ompl-demos parallel python3-matplotlib libjs-three chromium liborocos-kdl-dev
 )
 

@@ -2,12 +2,14 @@
 
 #include "ompl_core/io/SourceLocation.h"
 #include "ompl_core/run/ParameterSetting.h"
+#include "ompl_mm/scene/TriangleMesh.h"
 
 #include <Eigen/Geometry>
 
 #include <array>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,14 +25,17 @@ namespace ompl_mm
         {
             Box,       ///< a box of edge lengths boxSize
             Cylinder,  ///< a cylinder of radius and length, its axis along z
-            Sphere     ///< a sphere of radius
+            Sphere,    ///< a sphere of radius
+            Mesh       ///< the triangles of mesh (robot links from URDF meshes)
         };
         Kind kind{Kind::Box};                              ///< which solid, and so which fields count
         Eigen::Vector3d boxSize{Eigen::Vector3d::Zero()};  ///< box edge lengths, metres
         double radius{0.0};                                ///< cylinder or sphere radius, metres
         double length{0.0};                                ///< cylinder length along z, metres
+        std::shared_ptr<const TriangleMesh> mesh;          ///< the mesh, shared between its users
 
-        /** Height of the shape along z (box z size, cylinder length, sphere diameter), metres.
+        /** Height of the shape along z (box z size, cylinder length, sphere diameter, the mesh's z
+            extent), metres.
             @throws ompl::Exception when kind holds no Kind value (an out-of-range cast). */
         double height() const;
         /** Radius of the smallest vertical cylinder about the shape's axis that holds it whatever

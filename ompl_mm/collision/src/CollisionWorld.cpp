@@ -1,5 +1,7 @@
 #include "ompl_mm/collision/CollisionWorld.h"
 
+#include <fcl/geometry/bvh/BVH_model.h>
+
 #include "ompl_core/io/InputError.h"
 
 #include <algorithm>
@@ -73,6 +75,18 @@ namespace ompl_mm
                 return std::make_shared<fcl::Cylinderd>(shape.radius, shape.length);
             case Shape::Kind::Sphere:
                 return std::make_shared<fcl::Sphered>(shape.radius);
+            case Shape::Kind::Mesh:
+            {
+                auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+                std::vector<fcl::Triangle> triangles;
+                for (const std::array<int, 3> &t : shape.mesh->triangles)
+                    triangles.emplace_back(t[0], t[1], t[2]);
+                model->beginModel();
+                model->addSubModel(shape.mesh->vertices, triangles);
+                model->endModel();
+                model->computeLocalAABB();
+                return model;
+            }
         }
         throw ompl::Exception("unknown shape kind");
     }

@@ -36,6 +36,11 @@ namespace ompl_mm
                     solid.kind = ompl_core::ViewerSolid::Kind::Sphere;
                     solid.radius = shape.radius;
                     break;
+                case Shape::Kind::Mesh:
+                    solid.kind = ompl_core::ViewerSolid::Kind::Mesh;
+                    solid.vertices = shape.mesh->vertices;
+                    solid.triangles = shape.mesh->triangles;
+                    break;
             }
             return solid;
         }

@@ -88,10 +88,11 @@ namespace ompl_mm
                 Eigen::AlignedBox2d(box.center() - half - margin, box.center() + half + margin), LAYOUT);
         }
 
-        /** Footprint of an upright shape centred at (x, y) turned by yaw: a rectangle or a circle. */
+        /** Footprint of an upright shape centred at (x, y) turned by yaw: a rectangle, or a circle
+            (a mesh's: the circle about its z axis that holds it). */
         Footprint footprint(const Shape &shape, const Eigen::Vector2d &centre, double yaw)
         {
-            Footprint f{{}, centre, shape.kind == Shape::Kind::Box ? 0.0 : shape.radius};
+            Footprint f{{}, centre, shape.kind == Shape::Kind::Box ? 0.0 : shape.footprintRadius()};
             const Eigen::Rotation2Dd rotation(yaw);
             const Eigen::Vector2d half = shape.boxSize.head<2>() / 2.0;
             if (shape.kind == Shape::Kind::Box)
@@ -117,7 +118,7 @@ namespace ompl_mm
         double topHeight(const Shape &shape, const Eigen::Isometry3d &pose)
         {
             const Eigen::Matrix3d &r = pose.linear();
-            double reach = shape.radius;
+            double reach = shape.kind == Shape::Kind::Mesh ? shape.boundingRadius() : shape.radius;
             if (shape.kind == Shape::Kind::Box)
                 reach = (r.row(2).cwiseAbs().transpose().cwiseProduct(shape.boxSize / 2.0)).sum();
             else if (shape.kind == Shape::Kind::Cylinder)
@@ -170,7 +171,7 @@ namespace ompl_mm
                 const Eigen::Isometry3d link = model.robot().linkFrame(
                     space.robotValues(state), model.scene().robot.basePose, model.toolLink());
                 return Footprint{
-                    {}, (link * linkShape.origin).translation().head<2>(), linkShape.shape.radius};
+                    {}, (link * linkShape.origin).translation().head<2>(), linkShape.shape.footprintRadius()};
             }
             return std::nullopt;
         }

@@ -2,6 +2,8 @@
    drops) for messages and the file order of joints; the tree is then flattened parents first. */
 #include "ompl_mm/robot/RobotModel.h"
 
+#include "ompl_mm/robot/MeshFile.h"
+
 #include <tinyxml2.h>
 #include <urdf_parser/urdf_parser.h>
 
@@ -116,7 +118,35 @@ namespace ompl_mm
             return frame;
         }
 
-        Shape toShape(const urdf::Geometry &geometry, const std::string &link, const UrdfSource &source)
+        /** A <mesh>: its file found and read (once per file and scale, through meshes). */
+        Shape meshShape(const urdf::Mesh &geometry, const std::string &link, const UrdfSource &source,
+                        MeshCache &meshes)
+        {
+            const Eigen::Vector3d scale(geometry.scale.x, geometry.scale.y, geometry.scale.z);
+            if (!(scale.minCoeff() > 0.0))
+                throw source.linkError(link, "mesh '" + geometry.filename +
+                                                 "': scale must be positive, got " + format(scale.x()) + " " +
+                                                 format(scale.y()) + " " + format(scale.z()));
+            std::string tried;
+            const std::string path = resolveMeshFile(geometry.filename, source.name, tried);
+            if (path.empty())
+                throw source.linkError(
+                    link, "mesh '" + geometry.filename + "' not found (looked for " + tried + ")");
+            Shape shape;
+            shape.kind = Shape::Kind::Mesh;
+            try
+            {
+                shape.mesh = readMeshFile(path, scale, meshes);
+            }
+            catch (const std::runtime_error &e)
+            {
+                throw source.linkError(link, "mesh '" + path + "' cannot be read: " + e.what());
+            }
+            return shape;
+        }
+
+        Shape toShape(const urdf::Geometry &geometry, const std::string &link, const UrdfSource &source,
+                      MeshCache &meshes)
         {
             Shape shape;
             switch (geometry.type)
@@ -150,15 +180,17 @@ namespace ompl_mm
                         throw source.linkError(link,
                                                "sphere radius must be positive, got " + format(shape.radius));
                     return shape;
+                case urdf::Geometry::MESH:
+                    return meshShape(static_cast<const urdf::Mesh &>(geometry), link, source, meshes);
                 default:
-                    throw source.linkError(
-                        link, "mesh collision geometry is not supported; use box, cylinder or sphere");
+                    throw source.linkError(link, "unknown collision geometry");
             }
         }
 
         /** The link's collision shapes. A link must not look solid without being so: a <collision>
             that urdfdom dropped, or a <visual> without any <collision>, is an error. */
-        std::vector<LinkShape> toLinkShapes(const urdf::Link &link, const UrdfSource &source)
+        std::vector<LinkShape> toLinkShapes(const urdf::Link &link, const UrdfSource &source,
+                                            MeshCache &meshes)
         {
             const LinkElement written = source.link(link.name);
             if (link.collision_array.size() < written.collisions)
@@ -171,7 +203,7 @@ namespace ompl_mm
                                        "through obstacles and objects; add a <collision> element");
             std::vector<LinkShape> shapes;
             for (const urdf::CollisionSharedPtr &collision : link.collision_array)
-                shapes.push_back(LinkShape{toShape(*collision->geometry, link.name, source),
+                shapes.push_back(LinkShape{toShape(*collision->geometry, link.name, source, meshes),
                                            toIsometry(collision->origin)});
             return shapes;
         }
@@ -276,6 +308,7 @@ namespace ompl_mm
     RobotModel RobotModel::fromUrdfString(const std::string &urdf, const std::string &sourceName)
     {
         const UrdfSource source = indexElements(urdf, sourceName);
+        MeshCache meshes;
         urdf::ModelInterfaceSharedPtr model;
         try
         {
@@ -299,7 +332,7 @@ namespace ompl_mm
         {
             auto [urdfLink, parent, urdfJoint] = stack.back();
             stack.pop_back();
-            Link link{urdfLink->name, parent, -1, toLinkShapes(*urdfLink, source)};
+            Link link{urdfLink->name, parent, -1, toLinkShapes(*urdfLink, source, meshes)};
             if (urdfJoint)
             {
                 Joint joint = toJoint(*urdfJoint, source);

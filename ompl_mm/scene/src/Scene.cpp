@@ -25,6 +25,8 @@ namespace ompl_mm
                 return length;
             case Kind::Sphere:
                 return 2.0 * radius;
+            case Kind::Mesh:
+                return mesh->bounds.sizes().z();
         }
         throwInvalidKind("Shape::height", kind);
     }
@@ -38,6 +40,8 @@ namespace ompl_mm
             case Kind::Cylinder:
             case Kind::Sphere:
                 return radius;
+            case Kind::Mesh:
+                return mesh->footprintRadius;
         }
         throwInvalidKind("Shape::footprintRadius", kind);
     }
@@ -52,6 +56,8 @@ namespace ompl_mm
                 return std::hypot(radius, 0.5 * length);
             case Kind::Sphere:
                 return radius;
+            case Kind::Mesh:
+                return mesh->boundingRadius;
         }
         throwInvalidKind("Shape::boundingRadius", kind);
     }

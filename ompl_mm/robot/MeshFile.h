@@ -1,0 +1,28 @@
+/* Collision meshes of URDF links: where a mesh file is, and its triangles. */
+#pragma once
+
+#include "ompl_mm/scene/TriangleMesh.h"
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace ompl_mm
+{
+    /** The file a URDF mesh element's filename names: a relative name against the URDF's folder;
+        "package://NAME/PATH" against each folder of the environment variable OMPL_MM_PACKAGE_PATH
+        (colon-separated, like ROS_PACKAGE_PATH) that holds NAME/PATH, then against the URDF's
+        ancestors (one called NAME, or one holding NAME); "file://" is dropped.
+        @returns the path, or "" when no candidate exists; tried lists the places looked. */
+    std::string resolveMeshFile(const std::string &filename, const std::string &urdfFile, std::string &tried);
+
+    /** Meshes read so far, by file and scale: a file several links use is read once. */
+    using MeshCache = std::map<std::string, std::shared_ptr<const TriangleMesh>>;
+
+    /** The triangles of a mesh file (STL, OBJ, DAE and what else assimp reads), every node's
+        transform applied, scaled per axis; from cache when read before with this scale.
+        @throws std::runtime_error with the reader's message when the file cannot be read or holds
+        no triangle. */
+    std::shared_ptr<const TriangleMesh> readMeshFile(const std::string &path, const Eigen::Vector3d &scale,
+                                                     MeshCache &cache);
+}  // namespace ompl_mm

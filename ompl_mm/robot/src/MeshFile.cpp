@@ -1,0 +1,106 @@
+#include "ompl_mm/robot/MeshFile.h"
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <assimp/Importer.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+namespace ompl_mm
+{
+    namespace fs = std::filesystem;
+
+    namespace
+    {
+        const std::string PACKAGE_SCHEME = "package://";
+        const std::string FILE_SCHEME = "file://";
+
+        bool isFile(const fs::path &path)
+        {
+            std::error_code error;
+            return fs::is_regular_file(path, error);
+        }
+
+        /** Tries path, noting it in tried. */
+        bool tryPath(const fs::path &path, std::string &tried)
+        {
+            tried += (tried.empty() ? "" : ", ") + path.string();
+            return isFile(path);
+        }
+    }  // namespace
+
+    std::string resolveMeshFile(const std::string &filename, const std::string &urdfFile, std::string &tried)
+    {
+        tried.clear();
+        const fs::path urdfFolder = fs::absolute(fs::path(urdfFile)).parent_path();
+        if (filename.compare(0, PACKAGE_SCHEME.size(), PACKAGE_SCHEME) != 0)
+        {
+            std::string name = filename;
+            if (name.compare(0, FILE_SCHEME.size(), FILE_SCHEME) == 0)
+                name = name.substr(FILE_SCHEME.size());
+            const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : urdfFolder / name;
+            return tryPath(path.lexically_normal(), tried) ? path.lexically_normal().string() : "";
+        }
+        const std::string rest = filename.substr(PACKAGE_SCHEME.size());
+        const std::string package = rest.substr(0, rest.find('/'));
+        const std::string inside = rest.find('/') == std::string::npos ? "" : rest.substr(rest.find('/') + 1);
+        if (const char *path = std::getenv("OMPL_MM_PACKAGE_PATH"))
+        {
+            std::stringstream folders(path);
+            std::string folder;
+            while (std::getline(folders, folder, ':'))
+                if (!folder.empty() && tryPath(fs::path(folder) / package / inside, tried))
+                    return (fs::path(folder) / package / inside).string();
+        }
+        for (fs::path ancestor = urdfFolder; !ancestor.empty(); ancestor = ancestor.parent_path())
+        {
+            if (ancestor.filename() == package && tryPath(ancestor / inside, tried))
+                return (ancestor / inside).string();
+            if (tryPath(ancestor / package / inside, tried))
+                return (ancestor / package / inside).string();
+            if (ancestor == ancestor.root_path())
+                break;
+        }
+        return "";
+    }
+
+    std::shared_ptr<const TriangleMesh> readMeshFile(const std::string &path, const Eigen::Vector3d &scale,
+                                                     MeshCache &cache)
+    {
+        std::ostringstream key;
+        key.precision(17);
+        key << path << '|' << scale.x() << ' ' << scale.y() << ' ' << scale.z();
+        if (const auto cached = cache.find(key.str()); cached != cache.end())
+            return cached->second;
+
+        Assimp::Importer importer;
+        const aiScene *scene =
+            importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                        aiProcess_PreTransformVertices | aiProcess_SortByPType);
+        if (scene == nullptr)
+            throw std::runtime_error(importer.GetErrorString());
+        auto mesh = std::make_shared<TriangleMesh>();
+        mesh->file = path;
+        for (unsigned int m = 0; m < scene->mNumMeshes; ++m)
+        {
+            const aiMesh &part = *scene->mMeshes[m];
+            const int offset = static_cast<int>(mesh->vertices.size());
+            for (unsigned int v = 0; v < part.mNumVertices; ++v)
+                mesh->vertices.emplace_back(scale.x() * part.mVertices[v].x, scale.y() * part.mVertices[v].y,
+                                            scale.z() * part.mVertices[v].z);
+            for (unsigned int f = 0; f < part.mNumFaces; ++f)
+                if (part.mFaces[f].mNumIndices == 3)
+                    mesh->triangles.push_back({offset + static_cast<int>(part.mFaces[f].mIndices[0]),
+                                               offset + static_cast<int>(part.mFaces[f].mIndices[1]),
+                                               offset + static_cast<int>(part.mFaces[f].mIndices[2])});
+        }
+        if (mesh->triangles.empty())
+            throw std::runtime_error("the file holds no triangle");
+        mesh->measure();
+        cache.emplace(key.str(), mesh);
+        return mesh;
+    }
+}  // namespace ompl_mm
