@@ -21,7 +21,10 @@ namespace ompl_mm
         objects and the fixed obstacles (in a broad-phase tree). It applies the contact rules of the
         state-based validity: a held object may touch the gripper (the tool link and the links below
         it), a resting object may touch the obstacle its surface belongs to, listed robot link pairs
-        are ignored, and adjacent links never collide with each other. Not thread-safe: queries move
+        are ignored, adjacent links never collide with each other, and neither do links that touch
+        in the zero pose and in at least ALWAYS_TOUCHING_SHARE of SELF_CHECK_POSES random poses
+        (they are built to touch, like an SRDF's "default" and "always" pairs; listed with
+        OMPL_INFORM). Not thread-safe: queries move
         the bodies. Not copyable (FCL objects hold raw pointers). */
     class CollisionWorld
     {
@@ -88,7 +91,17 @@ namespace ompl_mm
         SweepCheck checkSweep(const Configuration &from, const Configuration &to,
                               const std::function<Configuration(double)> &configurationAt) const;
 
+        /** Random poses the automatic self-collision check tries (seeded, so every setup finds the
+            same pairs). */
+        static constexpr unsigned int SELF_CHECK_POSES = 1000;
+        /** Share of those poses in which two links must touch to be taken as built to touch. */
+        static constexpr double ALWAYS_TOUCHING_SHARE = 0.95;
+
     private:
+        /** Drops from selfPairs_ the pairs that touch in the zero pose and in nearly every random
+            pose. */
+        void dropAlwaysTouchingPairs();
+
         struct Body
         {
             std::unique_ptr<fcl::CollisionObjectd> object;

@@ -1,6 +1,8 @@
 #include "ompl_mm/collision/CollisionWorld.h"
 
 #include <fcl/geometry/bvh/BVH_model.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
 
 #include "ompl_core/io/InputError.h"
 
@@ -167,6 +169,49 @@ namespace ompl_mm
                     selfPairs_.emplace_back(a, b);
             }
         linkFrames_.resize(robot.links().size());
+        dropAlwaysTouchingPairs();
+    }
+
+    void CollisionWorld::dropAlwaysTouchingPairs()
+    {
+        if (selfPairs_.empty())
+            return;
+        const RobotModel &robot = model_->robot();
+        const Eigen::Isometry3d &base = model_->scene().robot.basePose;
+        const auto touchingPairs = [&](const std::vector<double> &q)
+        {
+            robot.forwardKinematics(q.data(), base, linkFrames_);
+            for (const Body &body : robotBodies_)
+                place(*body.object, linkFrames_[body.owner] * body.offset);
+            std::vector<bool> touching(selfPairs_.size());
+            for (std::size_t p = 0; p < selfPairs_.size(); ++p)
+                touching[p] = narrowPhase(*robotBodies_[selfPairs_[p].first].object,
+                                          *robotBodies_[selfPairs_[p].second].object);
+            return touching;
+        };
+        const std::vector<bool> atZero = touchingPairs(std::vector<double>(robot.dof(), 0.0));
+        std::vector<unsigned int> counts(selfPairs_.size(), 0);
+        ompl::RNG rng(1);  // a fixed seed: the same pairs for every setup of a scene
+        std::vector<double> q(robot.dof());
+        for (unsigned int k = 0; k < SELF_CHECK_POSES; ++k)
+        {
+            for (unsigned int i = 0; i < robot.dof(); ++i)
+                q[i] = rng.uniformReal(robot.variableJoint(i).lower, robot.variableJoint(i).upper);
+            const std::vector<bool> touching = touchingPairs(q);
+            for (std::size_t p = 0; p < selfPairs_.size(); ++p)
+                counts[p] += touching[p] ? 1 : 0;
+        }
+        std::vector<std::pair<std::size_t, std::size_t>> kept;
+        for (std::size_t p = 0; p < selfPairs_.size(); ++p)
+        {
+            if (atZero[p] && counts[p] >= ALWAYS_TOUCHING_SHARE * SELF_CHECK_POSES)
+                OMPL_INFORM("%s and %s touch in the zero pose and in %u of %u random poses: never checked",
+                            robotBodies_[selfPairs_[p].first].label.c_str(),
+                            robotBodies_[selfPairs_[p].second].label.c_str(), counts[p], SELF_CHECK_POSES);
+            else
+                kept.push_back(selfPairs_[p]);
+        }
+        selfPairs_ = std::move(kept);
     }
 
     CollisionWorld::~CollisionWorld() = default;

@@ -169,6 +169,24 @@ TEST(CollisionWorldSelf, AdjacentLinksMayTouchWhateverTheirOrder)
         EXPECT_TRUE(world.isCollisionFree({q.data(), &objects, &resting}, &contact)) << contact;
 }
 
+TEST(CollisionWorldSelf, LinksBuiltToTouchAreFoundAndNeverChecked)
+{
+    // base and link2 touch in every pose: not checked; link1 and link3 touch at zero but seldom
+    // elsewhere: checked
+    Scene scene;
+    scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/robots/always_touching.urdf";
+    scene.robot.toolLink = "link3";
+    const CollisionWorld world(makeModel(scene));
+    const std::vector<ObjectPose> objects;
+    const std::vector<int> resting;
+    std::string contact;
+    const std::vector<double> apart{0.3, 0.0, 1.0};
+    EXPECT_TRUE(world.isCollisionFree({apart.data(), &objects, &resting}, &contact)) << contact;
+    const std::vector<double> zero{0.0, 0.0, 0.0};
+    EXPECT_FALSE(world.isCollisionFree({zero.data(), &objects, &resting}, &contact));
+    EXPECT_EQ(contact, "robot link 'link1' and robot link 'link3'");
+}
+
 namespace
 {
     /** Motions of MOBILE BLOCKED's robot, and optionally one object with it, for checkSweep. */

@@ -307,8 +307,7 @@ namespace ompl_mm
             const std::string mesh = ROBOTS_DIR + "bad_mesh.urdf";
             EXPECT_EQ(
                 inputErrorOf([&] { RobotModel::fromUrdfFile(mesh); }),
-                mesh +
-                    ":5: link 'arm': mesh collision geometry is not supported; use box, cylinder or sphere");
+                mesh + ":5: link 'arm': mesh 'arm.stl' not found (looked for " + ROBOTS_DIR + "arm.stl)");
         }
 
         TEST(RobotModel, BadUrdfTextThrowsNamingSourceAndElement)
@@ -324,7 +323,7 @@ namespace ompl_mm
             expectError("<robot name=\"x\"><link name=\"a\"></robot>", "invalid URDF");
             expectError("<robot name=\"x\"><link name=\"a\"/><link name=\"b\"/></robot>", "invalid URDF");
             expectError(oneJointUrdf("revolute", REVOLUTE_LIMITS, "<mesh filename=\"arm.stl\"/>"),
-                        "link 'arm': mesh collision geometry is not supported");
+                        "link 'arm': mesh 'arm.stl' not found");
             expectError(oneJointUrdf("revolute", ""), "joint 'shoulder': revolute joint has no <limit>");
             expectError(oneJointUrdf("prismatic", ""), "joint 'shoulder': prismatic joint has no <limit>");
             expectError(oneJointUrdf("revolute",

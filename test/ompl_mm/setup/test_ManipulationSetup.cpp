@@ -274,7 +274,7 @@ TEST(ManipulationSetupInput, MalformedUrdfIsReportedAtTheRobotLineWithTheUrdfsOw
     scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/robots/bad_mesh.urdf";
     const std::string what = setupError(scene);
     EXPECT_TRUE(startsWith(what, scene.robot.where.str() + ": " + scene.robot.urdfFile + ":5: ")) << what;
-    EXPECT_TRUE(contains(what, "mesh collision geometry is not supported")) << what;
+    EXPECT_TRUE(contains(what, "mesh 'arm.stl' not found")) << what;
 }
 
 TEST(ManipulationSetupInput, ARobotWithoutCollisionGeometryIsRejectedAtTheRobotLine)
