@@ -22,7 +22,8 @@ namespace ompl_phys
         checks), the robot trajectory for the quality metrics, whether every step kept the rules,
         and whether the simulated end satisfies the goal. This is the independent check that a plan
         works: it uses only the path's controls and durations, not its stored states. It runs
-        through the setup's propagator and world, so it adds to the propagator's counters; a path
+        through the setup's propagator and world, and leaves the propagator's counters as the search left
+        them (they count the search's propagations only); a path
         without states gives an empty result.
         @pre path was planned on setup (its states and controls belong to setup's spaces).
         @throws ompl::Exception when a control duration is not a whole number of steps. */

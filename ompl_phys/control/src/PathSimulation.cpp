@@ -24,6 +24,8 @@ namespace ompl_phys
         if (path.getStateCount() == 0)
             return simulated;
 
+        // checking a plan is not searching for one: the propagator's counts stay the search's
+        const PhysicsStatePropagator::Counters searched = setup.propagator().counters();
         ompl::base::ScopedState<> current(si->getStateSpace(), path.getState(0));
         ompl::base::ScopedState<> next(si->getStateSpace());
         auto record = [&](const ompl::base::State *state)
@@ -62,6 +64,7 @@ namespace ompl_phys
         simulated.metrics = computeTrajectoryMetrics(simulated.robot);
         simulated.reachesGoal = simulated.violation == Violation::None &&
                                 setup.getProblemDefinition()->getGoal()->isSatisfied(current.get());
+        setup.propagator().restoreCounters(searched);
         return simulated;
     }
 }  // namespace ompl_phys

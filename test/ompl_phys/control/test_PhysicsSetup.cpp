@@ -462,3 +462,20 @@ TEST(PhysicsSetup, RunResultReadsPdstTreeWithoutPropagating)
     EXPECT_EQ(count("stats.tree_vertices"), pdst->motionCount());
     EXPECT_GT(pdst->motionCount(), 100u);
 }
+
+TEST(PhysicsSetup, ResimulationLeavesTheSearchsCounters)
+{
+    // the JSON's propagations and substeps are the search's, not the check's that follows it
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    seedOmpl(5);
+    PhysicsSetup setup(benchmarkScene(1));
+    setup.setPlannerByName("rrt");
+    ASSERT_TRUE(setup.solve(ompl::base::IterationTerminationCondition(32000)));
+    ASSERT_TRUE(setup.haveExactSolutionPath());
+    const PhysicsStatePropagator::Counters searched = setup.propagator().counters();
+    const SimulatedPath simulated = simulatePath(setup, setup.getSolutionPath());
+    ASSERT_GT(simulated.robot.moves.size(), 0u);
+    EXPECT_EQ(setup.propagator().counters().propagations, searched.propagations);
+    EXPECT_EQ(setup.propagator().counters().substeps, searched.substeps);
+    EXPECT_EQ(setup.propagator().counters().stops, searched.stops);
+}
