@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ompl_mm/robot/KinematicChain.h"
 #include "ompl_mm/robot/RobotModel.h"
 #include "ompl_mm/scene/Scene.h"
 
@@ -23,7 +24,7 @@ namespace ompl_mm
     public:
         /** Keeps its own copies of scene and robot.
             @throws ompl_core::InputError (naming the scene's robot element) when the tool link is
-            unknown. */
+            unknown, or naming a tool frame's element when its link is. */
         ManipulationModel(Scene scene, RobotModel robot);
 
         /** The problem, as given to the constructor. */
@@ -41,9 +42,16 @@ namespace ompl_mm
             moved to the scene's tool offset. */
         Eigen::Isometry3d toolFrame(const double *q) const;
 
+        /** The kinematic chain of the scene's tool frame called name (RobotSpec::tools): its pose
+            and Jacobian for joint values, the chain an IkSolver solves; the robot's root at the
+            origin (pass the scene's base pose to the chain's functions).
+            @throws ompl::Exception when the scene declares no such tool frame. */
+        const KinematicChain &toolChain(const std::string &name) const;
+
     private:
         Scene scene_;
         RobotModel robot_;
         int toolLink_{-1};
+        std::vector<std::pair<std::string, KinematicChain>> toolChains_;  ///< per declared tool frame
     };
 }  // namespace ompl_mm

@@ -114,6 +114,15 @@ namespace ompl_mm
         ompl_core::SourceLocation where;  ///< where the scene allows it, for messages
     };
 
+    /** A named frame fixed to a robot link, for inverse kinematics (a grasp frame, a push frame). */
+    struct ToolFrame
+    {
+        std::string name;                                       ///< unique among the robot's tool frames
+        std::string link;                                       ///< the link it is fixed to
+        Eigen::Isometry3d pose{Eigen::Isometry3d::Identity()};  ///< the frame in the link's frame
+        ompl_core::SourceLocation where;                        ///< where the scene declares it, for messages
+    };
+
     /** The robot: a URDF model placed in the world. */
     struct RobotSpec
     {
@@ -122,6 +131,7 @@ namespace ompl_mm
         std::string toolLink;                                       ///< link whose origin is the tool point
         Eigen::Vector3d toolOffset{Eigen::Vector3d::Zero()};        ///< tool point in the tool link frame
         std::vector<AllowedCollision> allowedCollisions;            ///< link pairs never checked
+        std::vector<ToolFrame> tools;                               ///< named frames for inverse kinematics
         ompl_core::SourceLocation where;  ///< where the scene defines the robot, for messages
     };
 

@@ -15,6 +15,23 @@ namespace ompl_mm
         {
             throw ompl_core::InputError(scene_.robot.where, e.what());
         }
+        for (const ToolFrame &tool : scene_.robot.tools)
+        {
+            const int link = robot_.findLink(tool.link);
+            if (link < 0)
+                throw ompl_core::InputError(tool.where, "tool frame '" + tool.name + "' names link '" +
+                                                            tool.link + "', which robot '" + robot_.name() +
+                                                            "' does not have");
+            toolChains_.emplace_back(tool.name, KinematicChain(robot_, link, tool.pose));
+        }
+    }
+
+    const KinematicChain &ManipulationModel::toolChain(const std::string &name) const
+    {
+        for (const auto &[toolName, chain] : toolChains_)
+            if (toolName == name)
+                return chain;
+        throw ompl::Exception("ManipulationModel", "the scene declares no tool frame '" + name + "'");
     }
 
     Eigen::Isometry3d ManipulationModel::toolFrame(const double *q) const

@@ -69,6 +69,8 @@ namespace ompl_mm
 
         private:
             void readRobot(const ompl_core::XmlElement &element);
+            /** A <tool name link> with an optional <origin>. */
+            ToolFrame readToolFrame(const ompl_core::XmlElement &element);
             std::string resolveUrdf(const ompl_core::XmlElement &element) const;
             /** The name of an obstacle or object, which carries no other attribute; obstacles and
                 objects share one name space, the collision world's. */
@@ -134,10 +136,17 @@ namespace ompl_mm
             robot.where = element.where();
             robot.urdfFile = resolveUrdf(element);
             robot.toolLink = element.text("tool_link");
-            ompl_core::FirstUses singles;
+            ompl_core::FirstUses singles, toolNames;
             for (const ompl_core::XmlElement &child :
-                 element.children({"origin", "tool_offset", "allow_collision"}))
+                 element.children({"origin", "tool_offset", "allow_collision", "tool"}))
             {
+                if (child.name() == "tool")
+                {
+                    robot.tools.push_back(readToolFrame(child));
+                    ompl_core::claimName(toolNames, child, robot.tools.back().name,
+                                         "duplicate tool frame '" + robot.tools.back().name + "'");
+                    continue;
+                }
                 if (child.name() == "allow_collision")
                 {
                     ompl_core::checkLeaf(child, {"link1", "link2"});
@@ -154,6 +163,20 @@ namespace ompl_mm
                     robot.toolOffset = child.vector3("xyz");
                 }
             }
+        }
+
+        ToolFrame SceneParser::readToolFrame(const ompl_core::XmlElement &element)
+        {
+            element.checkAttributes({"name", "link"});
+            ToolFrame tool{element.text("name"), element.text("link"), Eigen::Isometry3d::Identity(),
+                           element.where()};
+            ompl_core::FirstUses singles;
+            for (const ompl_core::XmlElement &child : element.children({"origin"}))
+            {
+                ompl_core::claimOnce(singles, child, element);
+                tool.pose = ompl_core::readOrigin(child);
+            }
+            return tool;
         }
 
         std::string SceneParser::resolveUrdf(const ompl_core::XmlElement &element) const

@@ -526,3 +526,31 @@ TEST(Shape, FootprintAndBoundingRadii)
     EXPECT_THROW(broken.footprintRadius(), ompl::Exception);
     EXPECT_THROW(broken.boundingRadius(), ompl::Exception);
 }
+
+TEST(SceneLoader, ToolFramesAreNamedFramesOnLinks)
+{
+    const Scene scene = parseLines(replaced(
+        2,
+        R"(  <robot urdf="robots/mobile_disc.urdf" tool_link="body"><tool name="grasp" link="body"><origin xyz="0 0 0.2" rpy="0 90deg 0"/></tool><tool name="push" link="slider"/></robot>)"));
+    ASSERT_EQ(scene.robot.tools.size(), 2u);
+    const ToolFrame &grasp = scene.robot.tools[0];
+    EXPECT_EQ(grasp.name, "grasp");
+    EXPECT_EQ(grasp.link, "body");
+    EXPECT_EQ(grasp.where.line, 2);
+    EXPECT_LT((grasp.pose.translation() - Eigen::Vector3d(0, 0, 0.2)).norm(), 1e-15);
+    EXPECT_LT((grasp.pose.linear() * Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitX()).norm(), 1e-12)
+        << "turned 90 deg about y";
+    EXPECT_TRUE(scene.robot.tools[1].pose.isApprox(Eigen::Isometry3d::Identity()))
+        << "no origin: the link's frame";
+}
+
+TEST(SceneLoader, ToolFrameErrors)
+{
+    const std::string robot = R"(  <robot urdf="robots/mobile_disc.urdf" tool_link="body">)";
+    expectError(replaced(2, robot + R"(<tool name="a" link="body"/><tool name="a" link="slider"/></robot>)"),
+                2, "duplicate tool frame 'a'");
+    expectError(replaced(2, robot + R"(<tool name="a"/></robot>)"), 2, "link");
+    expectError(replaced(2, robot + R"(<tool name="a" link="body" frame="x"/></robot>)"), 2, "frame");
+    expectError(replaced(2, robot + R"(<tool name="a" link="body"><origin/><origin/></tool></robot>)"), 2,
+                "origin");
+}

@@ -318,3 +318,31 @@ TEST(ManipulationSetup, SegmentResolutionLongerThanAnObjectsYawRangeIsAccepted)
     setup.manipulationSpace()->setSegmentResolution(7.0);
     EXPECT_NEAR(segmentsOfAMetreLongMotion(setup), 1.0, 1.0);
 }
+
+TEST(ManipulationSetupInput, AToolFrameOnAnUnknownLinkIsNamedAtItsLine)
+{
+    Scene scene = mobileBlockedScene();
+    scene.robot.tools.push_back(
+        {"grasp", "hand", Eigen::Isometry3d::Identity(), ompl_core::SourceLocation{"s.xml", 14}});
+    EXPECT_EQ(setupError(scene),
+              "s.xml:14: tool frame 'grasp' names link 'hand', which robot 'mobile_disc' does not have");
+}
+
+TEST(ManipulationSetup, ToolFramesGiveTheirChains)
+{
+    // a frame 0.1 m above the body, turned about z: its chain's pose is the link's frame times it
+    Scene scene = mobileBlockedScene();
+    const Eigen::Isometry3d offset =
+        Eigen::Translation3d(0, 0, 0.1) * Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ());
+    scene.robot.tools.push_back({"top", "body", offset, ompl_core::SourceLocation{"s.xml", 14}});
+    ManipulationSetup setup(scene);
+    const ManipulationModel &model = *setup.manipulationSpace()->model();
+    const KinematicChain &chain = model.toolChain("top");
+    EXPECT_EQ(chain.size(), 2u);
+    const std::vector<double> q{0.7, -1.1};
+    const Eigen::Isometry3d expected =
+        model.robot().linkFrame(q.data(), scene.robot.basePose, model.robot().linkIndex("body")) * offset;
+    EXPECT_TRUE(chain.toolPose(q.data(), scene.robot.basePose).isApprox(expected, 1e-12));
+    EXPECT_EQ(ompl_core::test::exceptionOf([&] { model.toolChain("none"); }),
+              "ManipulationModel: the scene declares no tool frame 'none'");
+}
