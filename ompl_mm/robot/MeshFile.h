@@ -12,7 +12,8 @@ namespace ompl_mm
     /** The file a URDF mesh element's filename names: a relative name against the URDF's folder;
         "package://NAME/PATH" against each folder of the environment variable OMPL_MM_PACKAGE_PATH
         (colon-separated, like ROS_PACKAGE_PATH) that holds NAME/PATH, then against the URDF's
-        ancestors (one called NAME, or one holding NAME); "file://" is dropped.
+        ancestors that hold NAME/PATH (so the package folder itself is found from inside it);
+        "file://" is dropped.
         @returns the path, or "" when no candidate exists; tried lists the places looked. */
     std::string resolveMeshFile(const std::string &filename, const std::string &urdfFile, std::string &tried);
 

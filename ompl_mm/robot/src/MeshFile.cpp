@@ -57,8 +57,6 @@ namespace ompl_mm
         }
         for (fs::path ancestor = urdfFolder; !ancestor.empty(); ancestor = ancestor.parent_path())
         {
-            if (ancestor.filename() == package && tryPath(ancestor / inside, tried))
-                return (ancestor / inside).string();
             if (tryPath(ancestor / package / inside, tried))
                 return (ancestor / package / inside).string();
             if (ancestor == ancestor.root_path())
