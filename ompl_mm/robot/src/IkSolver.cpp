@@ -75,7 +75,8 @@ namespace ompl_mm
             ++lastIterations_;
             const Eigen::Isometry3d pose = chain_.toolPoseAndJacobian(work_.data(), base_, jacobian_);
             const Vector6d error = taskError(target, pose, task);
-            if (error.norm() < tolerance)
+            const double size = error.norm();
+            if (size < tolerance)
                 return true;
             if (std::chrono::steady_clock::now() > end)
                 return false;
@@ -86,13 +87,13 @@ namespace ompl_mm
                 jacobian_.bottomRows<3>().setZero();
             Eigen::Matrix<double, 6, 6> normal = jacobian_ * jacobian_.transpose();
             // less damping as the error shrinks: fast final convergence, steady far from the target
-            const double lambda = damping * std::min(1.0, error.norm());
+            const double lambda = damping * std::min(1.0, size);
             normal.diagonal().array() += lambda * lambda;
             inverse_.noalias() = normal.ldlt().solve(jacobian_).transpose();
             step_.noalias() = inverse_ * error;
             // towards the middle of the joint ranges, in the (damped) null space of the task; close
             // to the target it would keep the error above what the damping leaks into the task
-            if (error.norm() > POSTURE_ERROR)
+            if (size > POSTURE_ERROR)
             {
                 for (unsigned int i = 0; i < n; ++i)
                     posture_[i] = chain_.continuous(i)
