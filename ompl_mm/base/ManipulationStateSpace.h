@@ -14,7 +14,8 @@ namespace ompl_mm
         "NAME_position" (RealVector 3: base centre in the world, metres) and "NAME_yaw" (SO2,
         radians). Object position bounds enclose all support surfaces and sampling regions.
         Interpolation is mode-aware: an object held by the robot (resting on no surface at either
-        end of a motion) moves with the tool frame, so any two consecutive waypoints of a
+        end of a motion) moves with the tool frame (keeping its own yaw when it turns freely, like
+        a cylinder), so any two consecutive waypoints of a
         manipulation path interpolate the way the primitive moved them. Not copyable (OMPL state
         spaces are shared through pointers). */
     class ManipulationStateSpace : public ompl::base::CompoundStateSpace
@@ -88,10 +89,11 @@ namespace ompl_mm
     private:
         /** True when the object moves between from and to and is held at either end. */
         bool isCarried(const ompl::base::State *from, const ompl::base::State *to, unsigned int object) const;
-        /** Pose at time t of an object carried from one pose to another while the tool moves. */
+        /** Pose at time t of an object carried from one pose to another while the tool moves; the
+            yaw of an object that turnsFreely (Shape::turnsFreely) interpolates on its own. */
         static ObjectPose carriedPose(const ObjectPose &from, const ObjectPose &to,
                                       const Eigen::Isometry3d &toolFrom, const Eigen::Isometry3d &toolTo,
-                                      const Eigen::Isometry3d &toolAt, double t);
+                                      const Eigen::Isometry3d &toolAt, double t, bool turnsFreely);
 
         ManipulationModelPtr model_;
     };

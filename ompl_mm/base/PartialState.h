@@ -34,8 +34,15 @@ namespace ompl_mm
         void setRobotDefined(bool defined) { defined_[0] = defined; }
         /** Marks the object's pose defined or "don't care". */
         void setObjectDefined(unsigned int object, bool defined) { defined_[1 + object] = defined; }
-        /** Marks every part defined. */
+        /** Marks every part defined (and no robot to grasp an object). */
         void defineAll();
+
+        /** The object the robot must grasp, or -1: a sample of an object "in the air" leaves the
+            robot undefined until inverse kinematics finds a grasp of it (MOPL seeds it from the
+            nearest vertex). */
+        int graspedObject() const { return graspedObject_; }
+        /** Sets the object the robot must grasp (-1: none). */
+        void setGraspedObject(int object) { graspedObject_ = object; }
 
         /** Writes into out the defined parts of this state and the other parts of fill; out may be
             state(). */
@@ -45,5 +52,6 @@ namespace ompl_mm
         const ManipulationStateSpace *space_;
         ompl::base::State *state_;
         std::vector<char> defined_;
+        int graspedObject_{-1};
     };
 }  // namespace ompl_mm

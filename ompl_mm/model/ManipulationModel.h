@@ -5,6 +5,7 @@
 #include "ompl_mm/scene/Scene.h"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace ompl_mm
@@ -47,11 +48,15 @@ namespace ompl_mm
             origin (pass the scene's base pose to the chain's functions).
             @throws ompl::Exception when the scene declares no such tool frame. */
         const KinematicChain &toolChain(const std::string &name) const;
+        /** The kinematic chain of the tool point (toolFrame()), for inverse kinematics of the tool
+            the scene's primitives carry objects with; the robot's root at the origin. */
+        const KinematicChain &toolPointChain() const { return *toolPointChain_; }
 
     private:
         Scene scene_;
         RobotModel robot_;
         int toolLink_{-1};
         std::vector<std::pair<std::string, KinematicChain>> toolChains_;  ///< per declared tool frame
+        std::optional<KinematicChain> toolPointChain_;                    ///< set by the constructor
     };
 }  // namespace ompl_mm

@@ -6,6 +6,7 @@
 #include "ompl_mm/planners/ManipulationTree.h"
 #include "ompl_mm/planners/ModalSampler.h"
 #include "ompl_mm/primitives/EmptySpacePlanner.h"
+#include "ompl_mm/primitives/Pickup.h"
 
 #include <ompl/base/Planner.h>
 
@@ -30,14 +31,15 @@ namespace ompl_mm
         the last solve(). */
     struct MOPLStatistics
     {
-        double samplingTime{0.0};     ///< drawing partial samples (and goal completion for the goal tree)
-        double nearestTime{0.0};      ///< nearest-neighbour search in the trees
-        double propagateTime{0.0};    ///< empty-space planning (primitives' propagate)
-        double connectTime{0.0};      ///< collision-checked walks along propagated trajectories
-        double smoothingTime{0.0};    ///< simplifying the solution (ManipulationSimplifier)
-        std::uint64_t iterations{0};  ///< iterations of the search loop, one sample each
-        std::uint64_t restarts{0};    ///< times the trees were cleared (see MOPL::setRestartIterations)
-        std::uint64_t collisionQueries{0};      ///< state validity queries (of a ManipulationValidityChecker)
+        double samplingTime{0.0};   ///< drawing partial samples (and goal completion for the goal tree)
+        double nearestTime{0.0};    ///< nearest-neighbour search in the trees
+        double propagateTime{0.0};  ///< empty-space planning (primitives' propagate)
+        double connectTime{0.0};    ///< collision-checked walks along propagated trajectories
+        double smoothingTime{0.0};  ///< simplifying the solution (ManipulationSimplifier)
+        double ikTime{0.0};  ///< inverse kinematics of primitives and grasp samples (part of the times above)
+        std::uint64_t iterations{0};        ///< iterations of the search loop, one sample each
+        std::uint64_t restarts{0};          ///< times the trees were cleared (see MOPL::setRestartIterations)
+        std::uint64_t collisionQueries{0};  ///< state validity queries (of a ManipulationValidityChecker)
         std::uint64_t freeCollisionQueries{0};  ///< those that found the state valid
     };
 
@@ -150,8 +152,17 @@ namespace ompl_mm
         void addSolution(int f, int g, const ompl::base::PlannerTerminationCondition &ptc);
         /** Clears both trees but the start. */
         void restart();
+        /** Gives a sample of an object in the air its robot joints: a grasp of the object found by
+            inverse kinematics seeded from vertex near of tree. False when there is none. */
+        bool graspSample(PartialState &sample, const ManipulationTree &tree, int near);
+        /** True when more than one object rests on no surface in state (no robot holds two). */
+        bool holdsTwo(const ompl::base::State *state) const;
+        /** Total inverse kinematics time of the primitives, seconds. */
+        double primitivesIkTime() const;
 
         std::vector<PrimitivePtr> primitives_;
+        const Pickup *pickup_{nullptr};  ///< grasps the objects of samples in the air; null: no such samples
+        double ikTimeAtClear_{0.0};      ///< primitivesIkTime() when the statistics were last reset
         const ManipulationStateSpace *space_{nullptr};
         std::unique_ptr<ManipulationMetric> metric_;
         std::unique_ptr<EmptySpacePlanner> esp_;

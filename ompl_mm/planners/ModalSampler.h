@@ -9,11 +9,13 @@ namespace ompl_mm
 {
     /** MOPL's sampling of partially defined configurations (paper, section III-B.2; cited at
         MOPL). With probability Probabilities::object one object is sampled on a support surface (at
-        its start yaw) and the robot and every other object are each left undefined, set to their
-        start value, or set to their goal value; otherwise the robot is sampled (uniformly, or at
-        the far end of the search: the goal pose for the forward tree, the start pose for the
-        backward tree) and the objects are chosen the same way. A goal value the goal does not
-        define is left undefined. */
+        its start yaw) or, when enabled (setSampleInAir), in a sampling region "in the air" (the
+        place chosen uniformly among surfaces and regions; the robot then left undefined until a
+        grasp of the object is found, PartialState::graspedObject), and the robot and every other object are
+       each left undefined, set to their start value, or set to their goal value; otherwise the robot is
+       sampled (uniformly, or at the far end of the search: the goal pose for the forward tree, the start pose
+       for the backward tree) and the objects are chosen the same way. A goal value the goal does not define
+       is left undefined. */
     class ModalSampler
     {
     public:
@@ -40,6 +42,8 @@ namespace ompl_mm
 
         /** The probabilities in use, to change. */
         Probabilities &probabilities() { return probabilities_; }
+        /** Lets objects be sampled in the scene's sampling regions (for robots that can grasp them). */
+        void setSampleInAir(bool sampleInAir) { sampleInAir_ = sampleInAir; }
 
         /** Draws a partial sample for the forward (start) or backward (goal) tree into out. */
         void sample(PartialState &out, bool forwardTree, ompl::RNG &rng) const;
@@ -47,7 +51,8 @@ namespace ompl_mm
     private:
         /** Sets one part (0 robot, 1 + i object i) to undefined, its start or its goal value. */
         void chooseFixedValue(PartialState &out, unsigned int part, ompl::RNG &rng) const;
-        void sampleObjectOnSurface(PartialState &out, unsigned int object, ompl::RNG &rng) const;
+        /** Samples the object on a surface or, when enabled, in a region; true when in a region. */
+        bool sampleObject(PartialState &out, unsigned int object, ompl::RNG &rng) const;
         void sampleRobot(PartialState &out, bool forwardTree, ompl::RNG &rng) const;
 
         const ManipulationStateSpace *space_;
@@ -55,5 +60,6 @@ namespace ompl_mm
         ompl::base::State *start_;
         ompl::base::State *goalState_;
         Probabilities probabilities_;
+        bool sampleInAir_{false};
     };
 }  // namespace ompl_mm

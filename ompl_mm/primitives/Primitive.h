@@ -2,6 +2,7 @@
 
 #include "ompl_mm/primitives/Trajectory.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -44,9 +45,20 @@ namespace ompl_mm
         virtual std::optional<SegmentLabel> explain(const ompl::base::State *from,
                                                     const ompl::base::State *to) const = 0;
 
+        /** Seconds the primitive has spent in inverse kinematics since it was made (0 for those
+            that need none); planners report it (MOPL's time_ik_s). */
+        virtual double inverseKinematicsTime() const { return 0.0; }
+
     protected:
         /** True when every object rests on a support surface in state. */
         bool allObjectsRest(const ompl::base::State *state) const;
+        /** True when `holds` is true for some object. */
+        bool anyObject(const std::function<bool(unsigned int)> &holds) const;
+        /** Of the objects for which `qualifies` is true, the one nearest to the tool in state (the
+            first of equals), or -1 when none qualifies: the object a primitive acts on when
+            several could be (MOPL's rule). */
+        int nearestToTool(const ompl::base::State *state,
+                          const std::function<bool(unsigned int)> &qualifies) const;
 
         const ManipulationStateSpace *space_;  ///< the space the primitive plans in, not owned
 

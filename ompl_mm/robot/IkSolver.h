@@ -1,9 +1,8 @@
 #pragma once
 
-#include "ompl_mm/robot/KinematicChain.h"
+#include "ompl_mm/robot/InverseKinematics.h"
 
 #include <ompl/base/GenericParam.h>
-#include <ompl/util/RandomNumbers.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -13,15 +12,6 @@
 
 namespace ompl_mm
 {
-    /** Which parts of a tool pose inverse kinematics must reach. */
-    enum class IkTask
-    {
-        Pose6D,         ///< position and orientation
-        Pose5DFreeYaw,  ///< position and orientation up to a rotation about the world's vertical
-                        ///< (grasps of upright objects)
-        Position3D,     ///< position only
-    };
-
     /** Inverse kinematics of a kinematic chain by damped least squares: each iteration steps the
         chain's joints by J^T (J J^T + lambda^2 I)^-1 e towards the target (e: the task's position
         and rotation error, world frame; lambda = damping * min(1, |e|)), plus, far from the target,
@@ -32,25 +22,19 @@ namespace ompl_mm
         given random generator state. Holds its own work space, so the hot path allocates nothing;
         use one solver per thread. Its parameters are declared (params()): ik_tolerance,
         ik_iterations, ik_restarts, ik_damping, ik_time_limit. */
-    class IkSolver
+    class IkSolver : public InverseKinematics
     {
     public:
         /** Solves for chain's tool frame, the robot's root at base. */
         IkSolver(KinematicChain chain, const Eigen::Isometry3d &base);
-
-        /** Finds joint values that put the tool at target for task, starting from the chain's
-            values in q (the whole robot's joint vector; other joints are left as they are).
-            @returns true with q holding a solution within the limits and within tolerance of the
-            target; false with q unchanged. rng draws the restarts. */
-        bool solve(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng);
 
         /** The task error of the chain's values in q: position and rotation error vector (world
             frame; radians about each axis), the rotation about the world vertical left out for
             Pose5DFreeYaw and the rotation for Position3D. */
         double error(const Eigen::Isometry3d &target, IkTask task, const double *q) const;
 
-        /** The chain solved for. */
-        const KinematicChain &chain() const { return chain_; }
+        /** InverseKinematics' hook: the chain solved for. */
+        const KinematicChain &chain() const override { return chain_; }
 
         /** Largest error that counts as reached (metres and radians together); 1e-5 by default. */
         double tolerance{1e-5};
@@ -76,6 +60,11 @@ namespace ompl_mm
 
         /** Iterations the last solve() took, over all attempts. */
         unsigned int lastIterations() const { return lastIterations_; }
+
+    protected:
+        /** InverseKinematics' hook: damped least squares from q's values, then from random values
+            (`restarts` times, within timeLimit); a solution is within tolerance. */
+        bool search(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng) override;
 
     private:
         using Vector6d = Eigen::Matrix<double, 6, 1>;

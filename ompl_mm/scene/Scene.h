@@ -44,6 +44,9 @@ namespace ompl_mm
         /** Radius of the smallest sphere about the shape's centre that holds it, metres.
             @throws as height(). */
         double boundingRadius() const;
+        /** True when turning the shape about its z axis leaves it the same (cylinders, spheres):
+            such an object's yaw is nothing a grasp holds, so carrying it keeps its yaw. */
+        bool turnsFreely() const { return kind == Kind::Cylinder || kind == Kind::Sphere; }
     };
 
     /** A fixed body of the workspace. */

@@ -28,6 +28,10 @@ namespace ompl_mm
             start line with reason. */
         [[noreturn]] void rejectStart(const ompl::base::State *start, const std::string &reason) const;
 
+        /** Times the empty-space planner tries to move an object to its goal before the goal
+            counts as impossible. */
+        static constexpr unsigned int REACH_ATTEMPTS = 10;
+
         /** Throws at the goal's line when the goal is impossible in one of the ways above. */
         void checkGoal(const ompl::base::State *start, const std::vector<PrimitivePtr> &primitives) const;
 

@@ -211,7 +211,8 @@ namespace ompl_mm
     ObjectPose ManipulationStateSpace::carriedPose(const ObjectPose &from, const ObjectPose &to,
                                                    const Eigen::Isometry3d &toolFrom,
                                                    const Eigen::Isometry3d &toolTo,
-                                                   const Eigen::Isometry3d &toolAt, double t)
+                                                   const Eigen::Isometry3d &toolAt, double t,
+                                                   bool turnsFreely)
     {
         const auto frame = [](const ObjectPose &pose)
         {
@@ -229,6 +230,8 @@ namespace ompl_mm
                              .slerp(t, Eigen::Quaterniond(graspTo.linear()))
                              .toRotationMatrix();
         const Eigen::Isometry3d carried = toolAt * grasp;
+        if (turnsFreely)  // its yaw is not held: it goes its own way, as uncarried yaws do
+            return {carried.translation(), from.yaw + t * std::remainder(to.yaw - from.yaw, 2.0 * M_PI)};
         // the object stays upright: keep only the rotation about the vertical
         const Eigen::Vector3d xAxis = carried.linear().col(0);
         return {carried.translation(), std::atan2(xAxis.y(), xAxis.x())};
@@ -255,9 +258,9 @@ namespace ompl_mm
         {
             if (carries && isCarried(from, to, i))
             {
-                setObjectPose(
-                    state, i,
-                    carriedPose(objectPose(from, i), objectPose(to, i), toolFrom, toolTo, toolAt, t));
+                setObjectPose(state, i,
+                              carriedPose(objectPose(from, i), objectPose(to, i), toolFrom, toolTo, toolAt, t,
+                                          model_->scene().objects[i].shape.turnsFreely()));
                 continue;
             }
             for (unsigned int index : {positionIndex(i), yawIndex(i)})

@@ -17,6 +17,7 @@ namespace ompl_mm
     void PartialState::defineAll()
     {
         std::fill(defined_.begin(), defined_.end(), 1);
+        graspedObject_ = -1;
     }
 
     void PartialState::complete(const ompl::base::State *fill, ompl::base::State *out) const

@@ -14,7 +14,7 @@ namespace ompl_mm
                 .addNumber("time_propagate_s", s.propagateTime)
                 .addNumber("time_connect_s", s.connectTime)
                 .addNumber("time_smoothing_s", s.smoothingTime)
-                .addNumber("time_ik_s", 0.0)
+                .addNumber("time_ik_s", s.ikTime)
                 .addCount("iterations", s.iterations)
                 .addCount("restarts", s.restarts)
                 .addCount("collision_queries", s.collisionQueries)

@@ -15,6 +15,8 @@ namespace ompl_mm
         {
             throw ompl_core::InputError(scene_.robot.where, e.what());
         }
+        toolPointChain_.emplace(robot_, toolLink_,
+                                Eigen::Isometry3d(Eigen::Translation3d(scene_.robot.toolOffset)));
         for (const ToolFrame &tool : scene_.robot.tools)
         {
             const int link = robot_.findLink(tool.link);

@@ -165,6 +165,37 @@ namespace ompl_mm
         simplifier_ = std::make_unique<ManipulationSimplifier>(si_);
         startTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), true);
         goalTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), false);
+        pickup_ = nullptr;
+        for (const PrimitivePtr &primitive : primitives_)
+            if (!pickup_)
+                pickup_ = dynamic_cast<const Pickup *>(primitive.get());
+        ikTimeAtClear_ = primitivesIkTime();
+    }
+
+    double MOPL::primitivesIkTime() const
+    {
+        double total = 0.0;
+        for (const PrimitivePtr &primitive : primitives_)
+            total += primitive->inverseKinematicsTime();
+        return total;
+    }
+
+    bool MOPL::holdsTwo(const ob::State *state) const
+    {
+        unsigned int held = 0;
+        for (unsigned int i = 0; i < space_->objectCount(); ++i)
+            held += space_->restingSurface(state, i) < 0 ? 1 : 0;
+        return held > 1;
+    }
+
+    bool MOPL::graspSample(PartialState &sample, const ManipulationTree &tree, int near)
+    {
+        ScopedTimer timer(statistics_.samplingTime);
+        space_->copyRobot(sample.state(), tree.vertex(near).state);
+        if (!pickup_->grasp(sample.state(), static_cast<unsigned int>(sample.graspedObject())))
+            return false;
+        sample.setRobotDefined(true);
+        return true;
     }
 
     void MOPL::checkParameters() const
@@ -182,6 +213,7 @@ namespace ompl_mm
             goalTree_->clear();
         sampler_.reset();
         statistics_ = MOPLStatistics();
+        ikTimeAtClear_ = primitivesIkTime();
     }
 
     void MOPL::restart()
@@ -343,6 +375,7 @@ namespace ompl_mm
             goal_->complete(fromStart, goalState, rng_);
             sampler_ = std::make_unique<ModalSampler>(space_, goal_, start, goalState);
             sampler_->probabilities() = probabilities_;
+            sampler_->setSampleInAir(pickup_ != nullptr);
             space_->freeState(goalState);
         }
         auto *checker = dynamic_cast<ManipulationValidityChecker *>(si_->getStateValidityChecker().get());
@@ -350,6 +383,7 @@ namespace ompl_mm
         const std::uint64_t freeBefore = checker ? checker->freeQueryCount() : 0;
         const auto countQueries = [&]
         {
+            statistics_.ikTime = primitivesIkTime() - ikTimeAtClear_;
             if (checker)
             {
                 statistics_.collisionQueries = checker->queryCount() - queriesBefore;
@@ -389,7 +423,15 @@ namespace ompl_mm
             const int near = nearest(a, sample, &newRoot);
             if (near < 0)
                 continue;
-            sample.complete(a.vertex(near).state, sample.state());
+            const bool graspFound = sample.graspedObject() < 0 || graspSample(sample, a, near);
+            if (graspFound)
+                sample.complete(a.vertex(near).state, sample.state());
+            if (!graspFound || holdsTwo(sample.state()))
+            {
+                if (newRoot)
+                    a.removeLast();
+                continue;
+            }
             const Extension grown = extend(a, near, sample.state());
             if (grown.last < 0 || grown.last == near)
             {
@@ -488,7 +530,7 @@ namespace ompl_mm
         data.properties["time_propagate_s REAL"] = ompl_core::exactText(statistics_.propagateTime);
         data.properties["time_connect_s REAL"] = ompl_core::exactText(statistics_.connectTime);
         data.properties["time_smoothing_s REAL"] = ompl_core::exactText(statistics_.smoothingTime);
-        data.properties["time_ik_s REAL"] = "0";
+        data.properties["time_ik_s REAL"] = ompl_core::exactText(statistics_.ikTime);
         data.properties["iterations INTEGER"] = std::to_string(statistics_.iterations);
         data.properties["restarts INTEGER"] = std::to_string(statistics_.restarts);
         data.properties["collision_queries INTEGER"] = std::to_string(statistics_.collisionQueries);

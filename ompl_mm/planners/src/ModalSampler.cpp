@@ -43,18 +43,30 @@ namespace ompl_mm
         }
     }
 
-    void ModalSampler::sampleObjectOnSurface(PartialState &out, unsigned int object, ompl::RNG &rng) const
+    bool ModalSampler::sampleObject(PartialState &out, unsigned int object, ompl::RNG &rng) const
     {
         const Scene &scene = space_->model()->scene();
-        const SupportSurface &s =
-            scene.surfaces[rng.uniformInt(0, static_cast<int>(scene.surfaces.size()) - 1)];
+        const int surfaces = static_cast<int>(scene.surfaces.size());
+        const int places = surfaces + (sampleInAir_ ? static_cast<int>(scene.samplingRegions.size()) : 0);
+        const int place = rng.uniformInt(0, places - 1);
         ObjectPose pose;
-        pose.position = {rng.uniformReal(s.min.x(), s.max.x()), rng.uniformReal(s.min.y(), s.max.y()),
-                         s.height};
-        // no primitive of this planner turns objects, so they keep their start yaw
+        if (place < surfaces)
+        {
+            const SupportSurface &s = scene.surfaces[place];
+            pose.position = {rng.uniformReal(s.min.x(), s.max.x()), rng.uniformReal(s.min.y(), s.max.y()),
+                             s.height};
+        }
+        else
+        {
+            const Eigen::AlignedBox3d &box = scene.samplingRegions[place - surfaces].box;
+            for (int k = 0; k < 3; ++k)
+                pose.position[k] = rng.uniformReal(box.min()[k], box.max()[k]);
+        }
+        // objects turn only with a grasp that holds their yaw, so samples keep the start yaw
         pose.yaw = scene.objects[object].start.yaw;
         space_->setObjectPose(out.state(), object, pose);
         out.setObjectDefined(object, true);
+        return place >= surfaces;
     }
 
     void ModalSampler::sampleRobot(PartialState &out, bool forwardTree, ompl::RNG &rng) const
@@ -79,13 +91,20 @@ namespace ompl_mm
         {
             const unsigned int chosen =
                 static_cast<unsigned int>(rng.uniformInt(0, static_cast<int>(objects) - 1));
-            sampleObjectOnSurface(out, chosen, rng);
-            chooseFixedValue(out, 0, rng);
+            out.setGraspedObject(-1);
+            if (sampleObject(out, chosen, rng))
+            {
+                out.setRobotDefined(false);
+                out.setGraspedObject(static_cast<int>(chosen));
+            }
+            else
+                chooseFixedValue(out, 0, rng);
             for (unsigned int i = 0; i < objects; ++i)
                 if (i != chosen)
                     chooseFixedValue(out, 1 + i, rng);
             return;
         }
+        out.setGraspedObject(-1);
         sampleRobot(out, forwardTree, rng);
         for (unsigned int i = 0; i < objects; ++i)
             chooseFixedValue(out, 1 + i, rng);

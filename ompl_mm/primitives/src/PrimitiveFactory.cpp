@@ -1,15 +1,85 @@
 #include "ompl_mm/primitives/PrimitiveFactory.h"
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/NumberText.h"
+#include "ompl_mm/primitives/Pickup.h"
 #include "ompl_mm/primitives/PushMobile.h"
+#include "ompl_mm/primitives/TransferRigid.h"
 #include "ompl_mm/primitives/Transit.h"
+#include "ompl_mm/robot/IkSolver.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace ompl_mm
 {
-    PrimitiveParameters::PrimitiveParameters(const PrimitiveSpec &spec) : spec_(spec) {}
+    namespace
+    {
+        /** Inverse kinematics of a grasping primitive: the factory's solver, or an IkSolver with
+            the primitive's budget (ik_iterations, ik_restarts). */
+        std::shared_ptr<Grasping> makeGrasping(const ManipulationStateSpace *space,
+                                               const PrimitiveParameters &params, double tilt)
+        {
+            Grasping::Settings settings;
+            settings.tool = params.text("tool", "");
+            settings.tilt = tilt;
+            settings.approachDistance = params.number("approach_distance", settings.approachDistance);
+            const unsigned int iterations = params.count("ik_iterations", 20, 1, 10000);
+            const unsigned int restarts = params.count("ik_restarts", 20, 0, 100000);
+            InverseKinematicsFactory factory = params.inverseKinematics();
+            if (!factory)
+                factory = [iterations, restarts](const KinematicChain &chain, const Eigen::Isometry3d &base)
+                {
+                    auto solver = std::make_unique<IkSolver>(chain, base);
+                    solver->iterations = iterations;
+                    solver->restarts = restarts;
+                    return std::unique_ptr<InverseKinematics>(std::move(solver));
+                };
+            return std::make_shared<Grasping>(space, settings, factory);
+        }
+    }  // namespace
+
+    PrimitiveParameters::PrimitiveParameters(const PrimitiveSpec &spec,
+                                             const InverseKinematicsFactory &inverseKinematics)
+        : spec_(spec), inverseKinematics_(inverseKinematics)
+    {
+    }
+
+    double PrimitiveParameters::angle(const std::string &name, double fallback) const
+    {
+        read_.push_back(name);
+        const auto it = spec_.params.find(name);
+        if (it == spec_.params.end())
+            return fallback;
+        const std::optional<double> value = ompl_core::parseAngle(it->second);
+        if (!value)
+            throw ompl_core::InputError(
+                spec_.where, "<" + spec_.type + "> parameter '" + name +
+                                 "' must be an angle (radians, or degrees as in 45deg), got '" + it->second +
+                                 "'");
+        return *value;
+    }
+
+    unsigned int PrimitiveParameters::count(const std::string &name, unsigned int fallback, unsigned int low,
+                                            unsigned int high) const
+    {
+        const std::optional<double> value = optionalNumber(name);
+        if (!value)
+            return fallback;
+        if (*value != std::floor(*value) || *value < low || *value > high)
+            throw ompl_core::InputError(spec_.where, "<" + spec_.type + "> parameter '" + name +
+                                                         "' must be a whole number in [" +
+                                                         std::to_string(low) + ", " + std::to_string(high) +
+                                                         "], got '" + spec_.params.at(name) + "'");
+        return static_cast<unsigned int>(*value);
+    }
+
+    std::string PrimitiveParameters::text(const std::string &name, const std::string &fallback) const
+    {
+        read_.push_back(name);
+        const auto it = spec_.params.find(name);
+        return it == spec_.params.end() ? fallback : it->second;
+    }
 
     double PrimitiveParameters::number(const std::string &name, double fallback) const
     {
@@ -61,6 +131,19 @@ namespace ompl_mm
                      { return std::make_shared<Transit>(space); });
         registerType("push_mobile", [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
                      { return std::make_shared<PushMobile>(space, params.optionalNumber("standoff")); });
+        registerType("pickup",
+                     [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
+                     {
+                         Pickup::Settings settings;
+                         settings.liftHeight = params.number("lift_height", settings.liftHeight);
+                         settings.minPlaneDistance =
+                             params.number("min_plane_distance", settings.minPlaneDistance);
+                         return std::make_shared<Pickup>(
+                             space, makeGrasping(space, params, params.angle("grasp_tilt", 0.0)), settings);
+                     });
+        registerType("transfer_rigid",
+                     [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
+                     { return std::make_shared<TransferRigid>(space, makeGrasping(space, params, 0.0)); });
     }
 
     void PrimitiveFactory::registerType(const std::string &type, Builder builder)
@@ -83,7 +166,7 @@ namespace ompl_mm
                 throw ompl_core::InputError(spec.where,
                                             "unknown primitive <" + spec.type + "> (known: " + known + ")");
             }
-            const PrimitiveParameters params(spec);
+            const PrimitiveParameters params(spec, inverseKinematics_);
             try
             {
                 primitives.push_back(it->second(space, params));

@@ -3,7 +3,6 @@
 #include <ompl/util/Exception.h>
 
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace ompl_mm
@@ -54,30 +53,14 @@ namespace ompl_mm
 
     bool PushMobile::isUseful(const ompl::base::State *from, const ompl::base::State *to) const
     {
-        if (!allObjectsRest(from) || !allObjectsRest(to))
-            return false;
-        for (unsigned int i = 0; i < space_->objectCount(); ++i)
-            if (slides(from, to, i))
-                return true;
-        return false;
+        return allObjectsRest(from) && allObjectsRest(to) &&
+               anyObject([&](unsigned int i) { return slides(from, to, i); });
     }
 
     bool PushMobile::propagate(const ompl::base::State *from, const ompl::base::State *to,
                                Trajectory &trajectory) const
     {
-        // the sliding object nearest to the tool
-        const Eigen::Vector2d tool = space_->toolPosition(from).head<2>();
-        int object = -1;
-        double nearest = std::numeric_limits<double>::infinity();
-        for (unsigned int i = 0; i < space_->objectCount(); ++i)
-        {
-            const double d = (space_->objectPosition(from, i).head<2>() - tool).norm();
-            if (slides(from, to, i) && d < nearest)
-            {
-                nearest = d;
-                object = static_cast<int>(i);
-            }
-        }
+        const int object = nearestToTool(from, [&](unsigned int i) { return slides(from, to, i); });
         if (object < 0)
             return false;
         const ObjectPose start = space_->objectPose(from, object);

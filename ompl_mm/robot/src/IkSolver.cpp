@@ -118,7 +118,7 @@ namespace ompl_mm
         return false;
     }
 
-    bool IkSolver::solve(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng)
+    bool IkSolver::search(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng)
     {
         const auto end = std::chrono::steady_clock::now() +
                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(

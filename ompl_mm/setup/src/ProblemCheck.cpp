@@ -113,9 +113,15 @@ namespace ompl_mm
                 pose.yaw = *goal.yaw;
             space_.copyState(target, start);
             space_.setObjectPose(target, object, pose);
-            const EmptySpacePlanner::Outcome outcome = planner.plan(start, target, trajectory, rng);
-            if (outcome != EmptySpacePlanner::Outcome::Reached &&
-                outcome != EmptySpacePlanner::Outcome::AlreadyThere)
+            // primitives that search (inverse kinematics) may miss once: only repeated misses count
+            bool reached = false;
+            for (unsigned int attempt = 0; attempt < REACH_ATTEMPTS && !reached; ++attempt)
+            {
+                const EmptySpacePlanner::Outcome outcome = planner.plan(start, target, trajectory, rng);
+                reached = outcome == EmptySpacePlanner::Outcome::Reached ||
+                          outcome == EmptySpacePlanner::Outcome::AlreadyThere;
+            }
+            if (!reached)
             {
                 unreachable = &goal;
                 break;

@@ -168,7 +168,7 @@ TEST_F(Factory, MessagesNameTheLineTheTypeAndTheParameter)
 {
     // the whole message of each check of the factory and of PrimitiveParameters
     EXPECT_EQ(error({spec("pick_and_place")}),
-              "unit_scene.xml:17: unknown primitive <pick_and_place> (known: push_mobile, transit)");
+              "unit_scene.xml:17: unknown primitive <pick_and_place> (known: pickup, push_mobile, transfer_rigid, transit)");
     EXPECT_EQ(error({spec("push_mobile", {{"standoff", "0.4x"}})}),
               "unit_scene.xml:17: <push_mobile> parameter 'standoff' must be a finite number, got '0.4x'");
     EXPECT_EQ(error({spec("push_mobile", {{"standoff", "0.41"}, {"speed", "2"}})}),

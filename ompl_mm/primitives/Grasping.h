@@ -1,0 +1,91 @@
+#pragma once
+
+#include "ompl_mm/base/ManipulationStateSpace.h"
+#include "ompl_mm/robot/InverseKinematics.h"
+
+#include <ompl/util/RandomNumbers.h>
+
+#include <memory>
+#include <string>
+
+namespace ompl_mm
+{
+    /** How an arm grasps upright objects, shared by the primitives that pick up and carry them:
+        the tool point at the object's centre, the tool's approach axis (its z, from the wrist
+        towards the finger tips) pointing down and tilted by `tilt` about the tool's x axis (the
+        axis between the fingers), the rotation about the world vertical left free. It solves the
+        inverse kinematics of these poses, and of short moves along them (approach, lift, retreat),
+        with one InverseKinematics solver for the chain of the scene's tool point or of a named
+        tool frame (whose pose the solver targets; objects are held relative to the tool point).
+        Not thread-safe (one solver). */
+    class Grasping
+    {
+    public:
+        /** What a grasp is held to. */
+        struct Settings
+        {
+            std::string tool;  ///< tool frame of the scene to solve for; empty: the tool point
+            double tilt{0.0};  ///< approach axis from the downward vertical, radians
+            double approachDistance{
+                0.05};  ///< length of the approach before a grasp and the retreat after a placement, metres
+        };
+
+        /** Grasps in space with settings, solving with a solver made by factory (IkSolver when it
+            is empty) for the scene's robot base. @pre space outlives it.
+            @throws ompl::Exception when settings.tool names no tool frame of the scene or the
+            approach distance is negative. */
+        Grasping(const ManipulationStateSpace *space, Settings settings,
+                 const InverseKinematicsFactory &factory);
+
+        /** The settings in force. */
+        const Settings &settings() const { return settings_; }
+        /** The solver (its statistics tell the time spent). */
+        const InverseKinematics &inverseKinematics() const { return *ik_; }
+
+        /** Sets q (the robot's joints, also the seed) so that the tool grasps the object at pose:
+            IK of the grasp pose with the yaw free. False, q unchanged, when no solution is found. */
+        bool solveGrasp(unsigned int object, const ObjectPose &pose, double *q);
+        /** Sets the solver chain's joints in q to random values within their limits (a seed for
+            another solution). */
+        void randomizeChain(double *q);
+        /** Sets q (also the seed) so that the solver's frame ends at its pose for q moved by
+            `offset` (world frame, applied after) and `local` (its own frame, applied before): full 6-D
+            IK of a short move. False, q unchanged, when no solution is found or when it is not
+            short: some joint would turn more than MAX_SHORT_MOVE (so that the straight joint motion
+            stays close to the straight tool motion). */
+        bool solveShortMove(const Eigen::Vector3d &offset, const Eigen::Vector3d &local, double *q);
+        /** Sets q (also the seed) so that an object held with the tool at q is carried to rest with
+            its base centre at `position` (its yaw free). False, q unchanged, when no solution is
+            found. @pre the object is held in state terms: objectPose is its pose for q. */
+        bool solveCarry(const ObjectPose &objectPose, const Eigen::Vector3d &position, double *q);
+
+        /** The most a joint may turn in a short move, radians or metres. */
+        static constexpr double MAX_SHORT_MOVE = 0.5;
+
+        /** The frame of an object's pose: base centre, rotation about the vertical. */
+        static Eigen::Isometry3d objectFrame(const ObjectPose &pose);
+        /** The pose of an object held in the tool: its frame relative to the tool, `grasp`, moved
+            with the tool to toolFrame; the yaw kept from `yaw` when the object turns freely. */
+        ObjectPose heldPose(unsigned int object, const Eigen::Isometry3d &toolFrame,
+                            const Eigen::Isometry3d &grasp, double yaw) const;
+        /** True when the object is held the same way in a and b: its base centre (and, unless it
+            turns freely, its yaw) the same in the tool frame, within GRASP_TOLERANCE. */
+        static bool sameGrasp(const ManipulationStateSpace &space, const ompl::base::State *a,
+                              const ompl::base::State *b, unsigned int object);
+        /** Largest difference between two grasps that counts as the same, metres or radians: the
+            inverse kinematics' tolerance and some rounding. */
+        static constexpr double GRASP_TOLERANCE = 1e-4;
+
+    private:
+        /** The solver's frame relative to the tool point at joints q. */
+        Eigen::Isometry3d solvedInTool(const double *q) const;
+        /** Solves for the solver's frame at target from seed q, into q when found. */
+        bool solve(const Eigen::Isometry3d &target, IkTask task, double *q);
+
+        const ManipulationStateSpace *space_;
+        Settings settings_;
+        std::unique_ptr<InverseKinematics> ik_;
+        std::vector<double> work_;
+        ompl::RNG rng_;
+    };
+}  // namespace ompl_mm
