@@ -35,6 +35,14 @@ namespace ompl_mm
             to q2 (each of size dof()). */
         BodySweep linkSweep(int link, double reach, const double *q1, const double *q2) const;
 
+        /** Bound on how much the distance between points within `reachA` of the origin of linkA
+            and points within `reachB` of the origin of linkB changes when the joints move from q1
+            to q2: only the joints between the two links count, since the joints above both move
+            them together (so a wrist and a forearm far from the base stay close to each other
+            however far the arm swings). */
+        double relativeRate(int linkA, double reachA, int linkB, double reachB, const double *q1,
+                            const double *q2) const;
+
         /** Sweep of an object of bounding radius `radius` (about its frame's z axis) that slides
             from one pose to another. */
         static BodySweep slideSweep(const ObjectPose &from, const ObjectPose &to, double radius);

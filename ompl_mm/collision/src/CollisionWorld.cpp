@@ -338,8 +338,17 @@ namespace ompl_mm
                 if (!(robotBodies_[l].gripper && (isHeld(from, object.owner) || isHeld(to, object.owner))))
                     add(robotBodies_[l], object, robotSweeps[l], objectSweeps[object.owner]);
         }
+        // links measured against each other: only the joints between them count
         for (const auto &[a, b] : selfPairs_)
-            add(robotBodies_[a], robotBodies_[b], robotSweeps[a], robotSweeps[b]);
+        {
+            const Body &la = robotBodies_[a];
+            const Body &lb = robotBodies_[b];
+            const double rate =
+                bounds_.relativeRate(la.owner, la.offset.translation().norm() + la.radius, lb.owner,
+                                     lb.offset.translation().norm() + lb.radius, from.joints, to.joints);
+            if (rate > 0.0)
+                pairs.push_back({&la, &lb, rate, false});
+        }
         for (std::size_t i = 0; i < objectBodies_.size(); ++i)
         {
             for (const Body &obstacle : obstacleBodies_)

@@ -78,6 +78,26 @@ namespace ompl_mm
         return sweep;
     }
 
+    double MotionBounds::relativeRate(int linkA, double reachA, int linkB, double reachB, const double *q1,
+                                      const double *q2) const
+    {
+        const auto below = [&](int link, double reach, int other)
+        {
+            double rate = 0.0;
+            for (const Lever &lever : levers_[link])
+            {
+                bool shared = false;
+                for (const Lever &above : levers_[other])
+                    shared = shared || above.variable == lever.variable;
+                if (!shared)
+                    rate += std::abs(q2[lever.variable] - q1[lever.variable]) *
+                            (lever.turns ? lever.length + reach : 1.0);
+            }
+            return rate;
+        };
+        return below(linkA, reachA, linkB) + below(linkB, reachB, linkA);
+    }
+
     BodySweep MotionBounds::slideSweep(const ObjectPose &from, const ObjectPose &to, double radius)
     {
         return {to.position - from.position, yawTurn(from.yaw, to.yaw) * radius};

@@ -115,3 +115,44 @@ TEST(MotionBounds, ASlidingObjectTurnsTheShortWay)
     EXPECT_TRUE(sweep.translation.isApprox(Eigen::Vector3d(1, 0, 0)));
     EXPECT_NEAR(sweep.spread, (2.0 * M_PI - 6.0) * 0.5, 1e-12);
 }
+
+TEST(MotionBounds, TwoLinksChangeTheirDistanceOnlyThroughTheJointsBetweenThem)
+{
+    const ManipulationModelPtr model = mobileArm();
+    const RobotModel &robot = model->robot();
+    const MotionBounds bounds(model);
+    const int upper = robot.linkIndex("upper");
+    const int fore = robot.linkIndex("fore");
+    const double reach = 0.3;
+    // x, y, shoulder and lift move both links together: their distance cannot change
+    const std::vector<double> q1{0.0, 0.0, 0.0, 0.0, 0.5};
+    std::vector<double> q2{1.5, -1.0, 2.0, 0.4, 0.5};
+    EXPECT_EQ(bounds.relativeRate(upper, reach, fore, reach, q1.data(), q2.data()), 0.0);
+    EXPECT_GT(bounds.linkSweep(fore, reach, q1.data(), q2.data()).spread, 1.0);  // though each moves far
+
+    // the elbow turns the forearm relative to the upper arm: points of both within reach change
+    // their distance by no more than the rate, over any part of the motion
+    q2[4] = -1.5;
+    const double rate = bounds.relativeRate(upper, reach, fore, reach, q1.data(), q2.data());
+    EXPECT_GT(rate, 0.0);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> unit(-0.5, 0.5);
+    double largest = 0.0;
+    for (int trial = 0; trial < 200; ++trial)
+    {
+        const Eigen::Vector3d pa = reach * Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
+        const Eigen::Vector3d pb = reach * Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
+        const double t = unit(rng) + 0.5;
+        std::vector<double> q(q1.size());
+        for (std::size_t j = 0; j < q.size(); ++j)
+            q[j] = q1[j] + t * (q2[j] - q1[j]);
+        std::vector<Eigen::Isometry3d> start, along;
+        robot.forwardKinematics(q1.data(), Eigen::Isometry3d::Identity(), start);
+        robot.forwardKinematics(q.data(), Eigen::Isometry3d::Identity(), along);
+        const double before = (start[upper] * pa - start[fore] * pb).norm();
+        const double after = (along[upper] * pa - along[fore] * pb).norm();
+        ASSERT_LE(std::abs(after - before), t * rate + 1e-12);
+        largest = std::max(largest, std::abs(after - before) / (t * rate));
+    }
+    EXPECT_GT(largest, 0.1);  // not loose by far
+}
