@@ -54,11 +54,15 @@ namespace ompl_mm
             short: some joint would turn more than MAX_SHORT_MOVE (so that the straight joint motion
             stays close to the straight tool motion). */
         bool solveShortMove(const Eigen::Vector3d &offset, const Eigen::Vector3d &local, double *q);
-        /** Sets q (also the seed) so that an object held with the tool at q is carried to rest with
-            its base centre at `position` (its yaw free). False, q unchanged, when no solution is
-            found. @pre the object is held in state terms: objectPose is its pose for q. */
-        bool solveCarry(const ObjectPose &objectPose, const Eigen::Vector3d &position, double *q);
+        /** Sets q (also the seed) so that an object held in the tool by `grasp` (its frame in the
+            tool point's frame) comes to `target` (its yaw free). False, q unchanged, when no
+            solution is found. */
+        bool solveCarry(const Eigen::Isometry3d &grasp, const ObjectPose &target, double *q);
 
+        /** Solutions tried by the primitives (the first seeded from the robot's joints, the others
+            from random joints) until one lets the short moves around it (approach, lift, retreat)
+            be short. */
+        static constexpr unsigned int ATTEMPTS = 5;
         /** The most a joint may turn in a short move, radians or metres. */
         static constexpr double MAX_SHORT_MOVE = 0.5;
 

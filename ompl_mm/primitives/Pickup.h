@@ -21,10 +21,6 @@ namespace ompl_mm
             double minPlaneDistance{0.2};  ///< the least move in the plane that asks for a pickup, metres
         };
 
-        /** Grasp solutions tried (the first seeded from the robot's joints, the others from random
-            joints) until one has an approach and a lift within short moves. */
-        static constexpr unsigned int GRASP_ATTEMPTS = 5;
-
         /** A pickup in space grasping as `grasping` says (shared with other primitives, such as
             TransferRigid). @pre space outlives the primitive.
             @throws ompl::Exception when the lift height is not positive or the plane distance is
@@ -37,8 +33,8 @@ namespace ompl_mm
         bool isUseful(const ompl::base::State *from, const ompl::base::State *to) const override;
         /** Primitive's hook: picks up the qualifying object nearest to the tool: a transit to the
             approach pose (left out when the robot is there), a transit along the approach to the
-            grasp, and a pickup segment lifting the object. False when no grasp of GRASP_ATTEMPTS
-            has both. */
+            grasp, and a pickup segment lifting the object. False when none of Grasping::ATTEMPTS
+            grasp solutions has both. */
         bool propagate(const ompl::base::State *from, const ompl::base::State *to,
                        Trajectory &trajectory) const override;
         /** Primitive's hook: a pickup segment when every object rests in `from`, exactly one

@@ -23,7 +23,8 @@ namespace ompl_mm
         /** Primitive's hook: useful when some object is held in `from`. */
         bool isUseful(const ompl::base::State *from, const ompl::base::State *to) const override;
         /** Primitive's hook: carries the held object towards its pose in `to` (see the class).
-            False when the placing IK fails or the place is off by more than the grasp tolerance. */
+            False when none of Grasping::ATTEMPTS placing solutions has a short retreat, or the
+            place is off by more than the grasp tolerance. */
         bool propagate(const ompl::base::State *from, const ompl::base::State *to,
                        Trajectory &trajectory) const override;
         /** Primitive's hook: a transfer segment when exactly one object is held in `from`, no

@@ -85,11 +85,9 @@ namespace ompl_mm
         return true;
     }
 
-    bool Grasping::solveCarry(const ObjectPose &objectPose, const Eigen::Vector3d &position, double *q)
+    bool Grasping::solveCarry(const Eigen::Isometry3d &grasp, const ObjectPose &target, double *q)
     {
-        const Eigen::Isometry3d grasp = space_->model()->toolFrame(q).inverse() * objectFrame(objectPose);
-        const Eigen::Isometry3d tool = objectFrame({position, objectPose.yaw}) * grasp.inverse();
-        return solve(tool * solvedInTool(q), IkTask::Pose5DFreeYaw, q);
+        return solve(objectFrame(target) * grasp.inverse() * solvedInTool(q), IkTask::Pose5DFreeYaw, q);
     }
 
     ObjectPose Grasping::heldPose(unsigned int object, const Eigen::Isometry3d &toolFrame,

@@ -60,7 +60,7 @@ namespace ompl_mm
         std::vector<double> graspJoints(n), approachJoints(n), liftJoints(n);
         const Eigen::Vector3d none = Eigen::Vector3d::Zero();
         bool found = false;
-        for (unsigned int attempt = 0; attempt < GRASP_ATTEMPTS && !found; ++attempt)
+        for (unsigned int attempt = 0; attempt < Grasping::ATTEMPTS && !found; ++attempt)
         {
             graspJoints.assign(start, start + n);
             if (attempt > 0)

@@ -38,39 +38,48 @@ namespace ompl_mm
         const ObjectPose target = space_->objectPose(to, object);
         const Eigen::Isometry3d grasp =
             model.toolFrame(space_->robotValues(from)).inverse() * Grasping::objectFrame(held);
-        ompl::base::State *waypoint = space_->cloneState(from);
-        double *q = space_->robotValues(waypoint);
+        const unsigned int n = space_->robotDimension();
+        const double *start = space_->robotValues(from);
+        std::vector<double> placeJoints(start, start + n);
+        std::vector<double> retreatJoints;
         const bool places = space_->restingSurface(to, object) >= 0;
-        if (places && !grasping_->solveCarry(held, target.position, q))
+        if (places)
         {
-            space_->freeState(waypoint);
-            return false;
+            // a place the tool can retreat from along its axis
+            bool found = false;
+            for (unsigned int attempt = 0; attempt < Grasping::ATTEMPTS && !found; ++attempt)
+            {
+                placeJoints.assign(start, start + n);
+                if (attempt > 0)
+                    grasping_->randomizeChain(placeJoints.data());
+                if (!grasping_->solveCarry(grasp, {target.position, held.yaw}, placeJoints.data()))
+                    continue;
+                retreatJoints = placeJoints;
+                found = grasping_->solveShortMove(Eigen::Vector3d::Zero(),
+                                                  {0.0, 0.0, -grasping_->settings().approachDistance},
+                                                  retreatJoints.data());
+            }
+            if (!found)
+                return false;
         }
-        if (!places)
-            space_->copyRobot(waypoint, to);
-        ObjectPose carried = grasping_->heldPose(object, model.toolFrame(q), grasp, target.yaw);
+        else
+            placeJoints.assign(space_->robotValues(to), space_->robotValues(to) + n);
+        ObjectPose carried =
+            grasping_->heldPose(object, model.toolFrame(placeJoints.data()), grasp, target.yaw);
         // where the grasp brings it within the IK's tolerance, it is the target (and then rests
-        // exactly on its surface); a place that misses is no place
-        const bool atTarget = (carried.position - target.position).norm() <= Grasping::GRASP_TOLERANCE;
-        if (places && !atTarget)
-        {
-            space_->freeState(waypoint);
-            return false;
-        }
-        if (atTarget)
+        // exactly on its surface)
+        if ((carried.position - target.position).norm() <= Grasping::GRASP_TOLERANCE)
             carried.position = target.position;
+        else if (places)
+            return false;  // a place that misses is no place
+        ompl::base::State *waypoint = space_->cloneState(from);
+        std::copy(placeJoints.begin(), placeJoints.end(), space_->robotValues(waypoint));
         space_->setObjectPose(waypoint, object, carried);
         trajectory.append(waypoint, {PrimitiveKind::Transfer, object});
         if (places)
         {
-            std::vector<double> retreat(q, q + space_->robotDimension());
-            if (grasping_->solveShortMove(Eigen::Vector3d::Zero(),
-                                          {0.0, 0.0, -grasping_->settings().approachDistance},
-                                          retreat.data()))
-            {
-                std::copy(retreat.begin(), retreat.end(), q);
-                trajectory.append(waypoint, {PrimitiveKind::Transit, -1});
-            }
+            std::copy(retreatJoints.begin(), retreatJoints.end(), space_->robotValues(waypoint));
+            trajectory.append(waypoint, {PrimitiveKind::Transit, -1});
         }
         space_->freeState(waypoint);
         return true;
