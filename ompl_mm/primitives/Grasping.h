@@ -63,6 +63,11 @@ namespace ompl_mm
             from random joints) until one lets the short moves around it (approach, lift, retreat)
             be short. */
         static constexpr unsigned int ATTEMPTS = 5;
+        /** Solutions with short moves compared (of ATTEMPTS): the one nearest to the robot's joints
+            is kept, so that the arm does not swing far round to reach what is close. */
+        static constexpr unsigned int CANDIDATES = 2;
+        /** Euclidean distance between two joint vectors of the robot, radians or metres. */
+        double jointDistance(const double *a, const double *b) const;
         /** The most a joint may turn in a short move, radians or metres. */
         static constexpr double MAX_SHORT_MOVE = 0.5;
 

@@ -62,6 +62,14 @@ namespace ompl_mm
         return solve(tool * solvedInTool(q), IkTask::Pose5DFreeYaw, q);
     }
 
+    double Grasping::jointDistance(const double *a, const double *b) const
+    {
+        double squared = 0.0;
+        for (std::size_t j = 0; j < work_.size(); ++j)
+            squared += (a[j] - b[j]) * (a[j] - b[j]);
+        return std::sqrt(squared);
+    }
+
     void Grasping::randomizeChain(double *q)
     {
         const KinematicChain &chain = ik_->chain();

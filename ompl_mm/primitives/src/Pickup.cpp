@@ -3,6 +3,7 @@
 #include <ompl/util/Exception.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace ompl_mm
@@ -58,21 +59,34 @@ namespace ompl_mm
         const unsigned int n = space_->robotDimension();
         const double *start = space_->robotValues(from);
         std::vector<double> graspJoints(n), approachJoints(n), liftJoints(n);
+        std::vector<double> tryGrasp(n), tryApproach(n), tryLift(n);
         const Eigen::Vector3d none = Eigen::Vector3d::Zero();
-        bool found = false;
-        for (unsigned int attempt = 0; attempt < Grasping::ATTEMPTS && !found; ++attempt)
+        unsigned int found = 0;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (unsigned int attempt = 0; attempt < Grasping::ATTEMPTS && found < Grasping::CANDIDATES;
+             ++attempt)
         {
-            graspJoints.assign(start, start + n);
+            tryGrasp.assign(start, start + n);
             if (attempt > 0)
-                grasping_->randomizeChain(graspJoints.data());
-            if (!grasping_->solveGrasp(object, pose, graspJoints.data()))
+                grasping_->randomizeChain(tryGrasp.data());
+            if (!grasping_->solveGrasp(object, pose, tryGrasp.data()))
                 continue;
-            approachJoints = liftJoints = graspJoints;
-            found = grasping_->solveShortMove(none, {0.0, 0.0, -grasping_->settings().approachDistance},
-                                              approachJoints.data()) &&
-                    grasping_->solveShortMove({0.0, 0.0, settings_.liftHeight}, none, liftJoints.data());
+            tryApproach = tryLift = tryGrasp;
+            if (!grasping_->solveShortMove(none, {0.0, 0.0, -grasping_->settings().approachDistance},
+                                           tryApproach.data()) ||
+                !grasping_->solveShortMove({0.0, 0.0, settings_.liftHeight}, none, tryLift.data()))
+                continue;
+            ++found;
+            const double distance = grasping_->jointDistance(start, tryApproach.data());
+            if (distance < nearest)
+            {
+                nearest = distance;
+                graspJoints.swap(tryGrasp);
+                approachJoints.swap(tryApproach);
+                liftJoints.swap(tryLift);
+            }
         }
-        if (!found)
+        if (found == 0)
             return false;
 
         const ManipulationModel &model = *space_->model();

@@ -1,5 +1,6 @@
 #include "ompl_mm/primitives/TransferRigid.h"
 
+#include <limits>
 #include <vector>
 
 namespace ompl_mm
@@ -45,21 +46,33 @@ namespace ompl_mm
         const bool places = space_->restingSurface(to, object) >= 0;
         if (places)
         {
-            // a place the tool can retreat from along its axis
-            bool found = false;
-            for (unsigned int attempt = 0; attempt < Grasping::ATTEMPTS && !found; ++attempt)
+            // a place the tool can retreat from along its axis, near the robot's joints
+            std::vector<double> place(n), retreat(n);
+            unsigned int found = 0;
+            double nearest = std::numeric_limits<double>::infinity();
+            for (unsigned int attempt = 0; attempt < Grasping::ATTEMPTS && found < Grasping::CANDIDATES;
+                 ++attempt)
             {
-                placeJoints.assign(start, start + n);
+                place.assign(start, start + n);
                 if (attempt > 0)
-                    grasping_->randomizeChain(placeJoints.data());
-                if (!grasping_->solveCarry(grasp, {target.position, held.yaw}, placeJoints.data()))
+                    grasping_->randomizeChain(place.data());
+                if (!grasping_->solveCarry(grasp, {target.position, held.yaw}, place.data()))
                     continue;
-                retreatJoints = placeJoints;
-                found = grasping_->solveShortMove(Eigen::Vector3d::Zero(),
-                                                  {0.0, 0.0, -grasping_->settings().approachDistance},
-                                                  retreatJoints.data());
+                retreat = place;
+                if (!grasping_->solveShortMove(Eigen::Vector3d::Zero(),
+                                               {0.0, 0.0, -grasping_->settings().approachDistance},
+                                               retreat.data()))
+                    continue;
+                ++found;
+                const double distance = grasping_->jointDistance(start, place.data());
+                if (distance < nearest)
+                {
+                    nearest = distance;
+                    placeJoints.swap(place);
+                    retreatJoints.swap(retreat);
+                }
             }
-            if (!found)
+            if (found == 0)
                 return false;
         }
         else
