@@ -1,0 +1,166 @@
+// Tests for MOPL on KUKA TABLE: solved for fixed seeds, and every solution re-checked from its
+// states alone, without its labels: joints within limits, every object either resting on a
+// surface or held by the tool with one grasp from its pickup to its place, at most one object
+// held, nothing moving that is neither carried nor at rest, the goal reached; and OMPL's own
+// PathGeometric::check().
+#include "common/MobileBlocked.h"
+#include "ompl_core/run/GlobalSeed.h"
+
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/util/Console.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+using namespace ompl_mm;
+using namespace ompl_mm::test;
+
+namespace
+{
+    /** Iterations far above what the seeds below need (at most a few hundred), so that a
+        regression fails quickly instead of running to a time limit. */
+    constexpr unsigned int MAX_ITERATIONS = 5000;
+    /** Interpolation steps per segment of the re-check. */
+    constexpr int STEPS = 20;
+    /** How far a held object may drift in the tool frame along a segment, metres. */
+    constexpr double GRASP_DRIFT = 1e-4;
+
+    Scene kukaTable()
+    {
+        return loadScene(OMPL_MM_SCENES_DIR "/kuka_table.xml");
+    }
+
+    /** The object's base centre in the tool frame of state. */
+    Eigen::Vector3d inTool(const ManipulationStateSpace &space, const ompl::base::State *state,
+                           unsigned int object)
+    {
+        return space.model()->toolFrame(space.robotValues(state)).inverse() *
+               space.objectPosition(state, object);
+    }
+
+    /** Index of the surface of scene the point rests on (own rule: height within 1e-4, inside the
+        rectangle), or -1. */
+    int surfaceUnder(const Scene &scene, const Eigen::Vector3d &p)
+    {
+        for (std::size_t s = 0; s < scene.surfaces.size(); ++s)
+        {
+            const SupportSurface &surface = scene.surfaces[s];
+            if (std::abs(p.z() - surface.height) < 1e-4 && p.x() >= surface.min.x() &&
+                p.x() <= surface.max.x() && p.y() >= surface.min.y() && p.y() <= surface.max.y())
+                return static_cast<int>(s);
+        }
+        return -1;
+    }
+
+    /** The re-check of one path, states only (see the file's comment). */
+    void recheck(const ManipulationStateSpace &space, const ManipulationPath &path, const Scene &scene)
+    {
+        const RobotModel &robot = space.model()->robot();
+        ompl::base::State *between = space.allocState();
+        for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i)
+        {
+            const ompl::base::State *a = path.getState(i);
+            const ompl::base::State *b = path.getState(i + 1);
+            for (int k = 0; k <= STEPS; ++k)
+            {
+                space.interpolate(a, b, static_cast<double>(k) / STEPS, between);
+                for (unsigned int j = 0; j < robot.dof(); ++j)
+                    ASSERT_GE(space.robotValues(between)[j], robot.variableJoint(j).lower - 1e-12);
+                unsigned int held = 0;
+                for (unsigned int o = 0; o < space.objectCount(); ++o)
+                {
+                    const bool moves =
+                        (space.objectPosition(a, o) - space.objectPosition(b, o)).norm() > 1e-9;
+                    const bool rests = surfaceUnder(scene, space.objectPosition(between, o)) >= 0;
+                    held += rests ? 0 : 1;
+                    if (!moves)
+                    {
+                        // an object that stays put between the ends stays put all along
+                        ASSERT_LE((space.objectPosition(between, o) - space.objectPosition(a, o)).norm(),
+                                  1e-9)
+                            << "segment " << i;
+                        continue;
+                    }
+                    // a moving object is carried: held at one end at least, its grasp kept
+                    ASSERT_TRUE(surfaceUnder(scene, space.objectPosition(a, o)) < 0 ||
+                                surfaceUnder(scene, space.objectPosition(b, o)) < 0)
+                        << "object " << o << " slides in segment " << i;
+                    ASSERT_LE((inTool(space, between, o) - inTool(space, a, o)).norm(), GRASP_DRIFT)
+                        << "object " << o << " slips in the hand in segment " << i << " at " << k;
+                }
+                ASSERT_LE(held, 1u) << "segment " << i;
+            }
+        }
+        space.freeState(between);
+        // the goal, from the scene's numbers
+        const ompl::base::State *end = path.getState(path.getStateCount() - 1);
+        for (const ObjectGoal &goal : scene.objectGoals)
+        {
+            const Eigen::Vector3d p =
+                space.objectPosition(end, static_cast<unsigned int>(scene.objectIndex(goal.object)));
+            for (int c = 0; c < 3; ++c)
+            {
+                if (!goal.position[c])
+                    continue;
+                EXPECT_LE(std::abs(p[c] - *goal.position[c]), goal.positionTolerance) << goal.object;
+            }
+        }
+        for (unsigned int j = 0; j < robot.dof(); ++j)
+            EXPECT_LE(std::abs(space.robotValues(end)[j]), scene.robotGoal.tolerance);
+    }
+
+    class MOPLOnKukaTable : public ::testing::TestWithParam<unsigned int>
+    {
+    protected:
+        void SetUp() override { ompl::msg::setLogLevel(ompl::msg::LOG_WARN); }
+    };
+}  // namespace
+
+TEST_P(MOPLOnKukaTable, SolvesAndSolutionPassesTheRecheck)
+{
+    const Scene scene = kukaTable();
+    ompl_core::reseedOmpl(GetParam());
+    ManipulationSetup setup(scene);
+    setup.mopl()->setSeed(GetParam());
+    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(MAX_ITERATIONS)),
+              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const ManipulationPath &path = setup.manipulationPath();
+    EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
+    EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
+    const std::map<std::string, unsigned int> counts = path.primitiveCounts();
+    EXPECT_EQ(counts.at("pickup"), 3u);
+    EXPECT_EQ(counts.at("transfer"), 3u);
+    EXPECT_GT(setup.mopl()->statistics().ikTime, 0.0);
+    recheck(*setup.manipulationSpace(), path, scene);
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, MOPLOnKukaTable, ::testing::Values(1u, 2u, 3u));
+
+TEST(MOPLOnKukaTable, SameSeedGivesSamePath)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const Scene scene = kukaTable();
+    std::vector<std::vector<double>> paths;
+    for (int run = 0; run < 2; ++run)
+    {
+        ompl_core::reseedOmpl(4);
+        ManipulationSetup setup(scene);
+        setup.mopl()->setSeed(4);
+        ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(MAX_ITERATIONS)),
+                  ompl::base::PlannerStatus::EXACT_SOLUTION);
+        const ManipulationPath &path = setup.manipulationPath();
+        std::vector<double> values;
+        for (std::size_t i = 0; i < path.getStateCount(); ++i)
+        {
+            std::vector<double> state;
+            setup.getStateSpace()->copyToReals(state, path.getState(i));
+            values.insert(values.end(), state.begin(), state.end());
+        }
+        paths.push_back(values);
+    }
+    EXPECT_EQ(paths[0], paths[1]);
+}
