@@ -49,7 +49,9 @@ PRIMITIVES = (("primitives_transit", "transit"), ("primitives_push", "push"),
               ("primitives_pickup", "pickup"), ("primitives_transfer", "transfer"))
 TIME_PARTS = (("time_sampling_s", "sampling"), ("time_nearest_s", "nearest neighbour"),
               ("time_propagate_s", "propagate"), ("time_connect_s", "connect"),
-              ("time_smoothing_s", "smoothing"), ("time_ik_s", "inverse kinematics"))
+              ("time_smoothing_s", "smoothing"))
+# spent inside the parts above (primitives, grasp samples, smoothing): drawn beside them, not stacked
+IK_PART = ("time_ik_s", "inverse kinematics (within the parts)")
 REQUIRED_TABLES = ("runs", "experiments", "plannerConfigs")
 REQUIRED_RUN_COLUMNS = ("experimentid", "plannerid", "time", "solved")
 
@@ -461,6 +463,7 @@ def plot_time_shares(plt, bench, out):
                 highest = max(highest, bottom)
             draw_share(ax, i + 1, bottom, max(0.0, 100.0 - bottom), "0.88", "other (not measured)" if i == 0 else None,
                        hatch="//")
+            draw_ik_share(ax, bench, name, p, i + 1, first=i == 0)
             ax.bar(i + 1, 100.0, width=0.6, fill=False, edgecolor=bench.colours[p], linewidth=2.5)
         if highest > 100.0:  # parts that overlap: show all of them, and where 100 % is
             ax.axhline(100.0, color="black", lw=1.0, ls=":")
@@ -472,6 +475,17 @@ def plot_time_shares(plt, bench, out):
         ax.legend(handles[::-1], labels[::-1], loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize=9,
                   title="part", title_fontsize=9, frameon=False)
     return save(plt, fig, out, file_name)
+
+
+def draw_ik_share(ax, bench, name, planner, x, first):
+    """The share of inverse kinematics as a narrow bar right of the stacked one, when it is measured."""
+    if not columns_with_values(bench, (IK_PART,)):
+        return
+    means, n = time_shares(bench, bench.select(name, planner, True), (IK_PART,))
+    if n == 0 or not means[0]:
+        return
+    ax.bar(x + 0.38, means[0], width=0.12, color="tab:purple", label=IK_PART[1] if first else None)
+    ax.text(x + 0.38, means[0], f"{means[0]:.0f} %", ha="center", va="bottom", fontsize=7)
 
 
 def draw_share(ax, x, bottom, height, colour, label, hatch=None):
