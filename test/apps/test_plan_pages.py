@@ -105,6 +105,15 @@ def main():
     checks.check(f"the MOBILE BLOCKED page is under 2 MB ({size} bytes)", 0 < size < MAX_PAGE_BYTES)
     check_page(checks, "MOBILE BLOCKED", mm_page, r"(transit|push obj\d) — [\d.]+ s of [\d.]+ s$", blank)
 
+    arm_page = os.path.join(args.scratch, "kuka_table.html")
+    done = subprocess.run([args.mm_plan, os.path.join(args.scenes, "kuka_table.xml"), "--seed", "1",
+                           "--html", arm_page], capture_output=True, text=True, timeout=300)
+    checks.check("ompl_mm_plan --html writes the KUKA TABLE page", done.returncode == 0 and os.path.isfile(arm_page),
+                 done.stderr)
+    size = os.path.getsize(arm_page) if os.path.isfile(arm_page) else 0
+    checks.check(f"the KUKA TABLE page is under 2 MB ({size} bytes)", 0 < size < MAX_PAGE_BYTES)
+    check_page(checks, "KUKA TABLE", arm_page, r"(transit|pickup cyl\d|transfer cyl\d) — [\d.]+ s of [\d.]+ s$", blank)
+
     phys_page = os.path.join(args.scratch, "scene2.html")
     done = subprocess.run([args.phys_plan, os.path.join(args.scenes, "physics", "scene2.xml"), "--planner",
                            "sycloprrt", "--seed", "3", "--time-limit", "60", "--html", phys_page],
