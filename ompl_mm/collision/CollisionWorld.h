@@ -14,8 +14,14 @@
 namespace ompl_mm
 {
     /** Makes the FCL geometry of a shape (cylinders along z, centred); the caller shares its
-        ownership. @throws ompl::Exception for a shape kind outside Shape::Kind. */
-    std::shared_ptr<fcl::CollisionGeometryd> makeCollisionGeometry(const Shape &shape);
+        ownership. A mesh becomes, as meshes asks, a bounding-volume hierarchy (OBBRSS) of its
+        triangles or the convex polytope of its hull (TriangleMesh::convexHull(), computed once per
+        mesh), which holds the mesh (to within ConvexHull::RELATIVE_TOLERANCE) and whose distance
+        queries run GJK on its corners instead of walking the triangles.
+        @throws ompl::Exception for a shape kind outside Shape::Kind, or naming the mesh file when
+        its hull is asked for and its vertices span no volume (a flat mesh). */
+    std::shared_ptr<fcl::CollisionGeometryd> makeCollisionGeometry(
+        const Shape &shape, MeshCollision meshes = MeshCollision::Exact);
 
     /** Collision checking of one manipulation configuration with FCL: robot links, movable
         objects and the fixed obstacles (in a broad-phase tree). It applies the contact rules of the
@@ -24,8 +30,12 @@ namespace ompl_mm
         are ignored, adjacent links never collide with each other, and neither do links that touch
         in the zero pose and in at least ALWAYS_TOUCHING_SHARE of SELF_CHECK_POSES random poses
         (they are built to touch, like an SRDF's "default" and "always" pairs; listed with
-        OMPL_INFORM). Not thread-safe: queries move
-        the bodies. Not copyable (FCL objects hold raw pointers). */
+        OMPL_INFORM). Robot link meshes collide as the scene's RobotSpec::meshCollision says (the
+        robot attribute meshes="exact" or "convex_hull"): as their triangles (a surface: a body
+        wholly inside one does not touch it), or as their solid convex hulls, whose distance queries
+        (checkSweep's rounds) skip the triangle hierarchy but which fill the meshes' concavities,
+        so they reject some free configurations and accept none where the triangles collide. Not
+        thread-safe: queries move the bodies. Not copyable (FCL objects hold raw pointers). */
     class CollisionWorld
     {
     public:
@@ -41,7 +51,8 @@ namespace ompl_mm
 
         /** Builds the bodies of the model's robot, objects and obstacles; shares the model.
             @throws ompl_core::InputError when a surface names an unknown obstacle or an allowed
-            collision pair names an unknown link. */
+            collision pair names an unknown link, or at the scene's robot element when convex hulls are
+            asked for and a link's mesh spans no volume (naming the link and the mesh file). */
         explicit CollisionWorld(ManipulationModelPtr model);
         /** Frees the FCL bodies. */
         ~CollisionWorld();

@@ -21,7 +21,9 @@ namespace ompl_mm
     using MeshCache = std::map<std::string, std::shared_ptr<const TriangleMesh>>;
 
     /** The triangles of a mesh file (STL, OBJ, DAE and what else assimp reads), every node's
-        transform applied, scaled per axis; from cache when read before with this scale.
+        transform applied, scaled per axis; from cache when read before with this scale. As in
+        ROS, a COLLADA file's up axis is ignored (its coordinates are taken as they are, z up);
+        its unit is applied.
         @throws std::runtime_error with the reader's message when the file cannot be read or holds
         no triangle. */
     std::shared_ptr<const TriangleMesh> readMeshFile(const std::string &path, const Eigen::Vector3d &scale,

@@ -126,6 +126,13 @@ namespace ompl_mm
         ompl_core::SourceLocation where;                        ///< where the scene declares it, for messages
     };
 
+    /** What the collision checks take for the robot links' meshes. */
+    enum class MeshCollision
+    {
+        Exact,      ///< the triangles, as an FCL bounding-volume hierarchy (OBBRSS)
+        ConvexHull  ///< the mesh's convex hull, as an FCL convex polytope: cheaper queries, conservative
+    };
+
     /** The robot: a URDF model placed in the world. */
     struct RobotSpec
     {
@@ -135,6 +142,7 @@ namespace ompl_mm
         Eigen::Vector3d toolOffset{Eigen::Vector3d::Zero()};        ///< tool point in the tool link frame
         std::vector<AllowedCollision> allowedCollisions;            ///< link pairs never checked
         std::vector<ToolFrame> tools;                               ///< named frames for inverse kinematics
+        MeshCollision meshCollision{MeshCollision::Exact};          ///< how link meshes collide
         ompl_core::SourceLocation where;  ///< where the scene defines the robot, for messages
     };
 

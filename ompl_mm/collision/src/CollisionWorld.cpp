@@ -5,6 +5,7 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_mm/scene/ConvexHull.h"
 
 #include <algorithm>
 #include <limits>
@@ -59,6 +60,22 @@ namespace ompl_mm
             object.computeAABB();
         }
 
+        /** FCL's convex polytope of a hull: its corners, and its triangles as FCL's face list
+            (3, i0, i1, i2, 3, ...), outward as FCL wants them. */
+        std::shared_ptr<fcl::Convexd> convexPolytope(const ConvexHull &hull)
+        {
+            auto vertices = std::make_shared<std::vector<fcl::Vector3d>>(hull.vertices);
+            auto faces = std::make_shared<std::vector<int>>();
+            faces->reserve(4 * hull.triangles.size());
+            for (const std::array<int, 3> &t : hull.triangles)
+                faces->insert(faces->end(), {3, t[0], t[1], t[2]});
+            // throw_if_invalid: FCL checks the topology (every edge shared by two faces)
+            auto convex = std::make_shared<fcl::Convexd>(vertices, static_cast<int>(hull.triangles.size()),
+                                                         faces, true);
+            convex->computeLocalAABB();
+            return convex;
+        }
+
         Eigen::Isometry3d objectFrame(const ObjectPose &pose)
         {
             Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
@@ -67,7 +84,7 @@ namespace ompl_mm
         }
     }  // namespace
 
-    std::shared_ptr<fcl::CollisionGeometryd> makeCollisionGeometry(const Shape &shape)
+    std::shared_ptr<fcl::CollisionGeometryd> makeCollisionGeometry(const Shape &shape, MeshCollision meshes)
     {
         switch (shape.kind)
         {
@@ -79,6 +96,8 @@ namespace ompl_mm
                 return std::make_shared<fcl::Sphered>(shape.radius);
             case Shape::Kind::Mesh:
             {
+                if (meshes == MeshCollision::ConvexHull)
+                    return convexPolytope(*shape.mesh->convexHull());
                 auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
                 std::vector<fcl::Triangle> triangles;
                 for (const std::array<int, 3> &t : shape.mesh->triangles)
@@ -99,10 +118,24 @@ namespace ompl_mm
         const RobotModel &robot = model_->robot();
         for (std::size_t l = 0; l < robot.links().size(); ++l)
             for (const LinkShape &s : robot.links()[l].shapes)
+            {
+                const std::string label = "robot link '" + robot.links()[l].name + "'";
+                std::shared_ptr<fcl::CollisionGeometryd> geometry;
+                try
+                {
+                    geometry = makeCollisionGeometry(s.shape, scene.robot.meshCollision);
+                }
+                catch (const ompl::Exception &e)
+                {
+                    // only a hull fails here: name the link, and the scene line that asked for hulls
+                    throw ompl_core::InputError(
+                        scene.robot.where,
+                        label + ": " + e.what() + " (meshes=\"exact\" takes its triangles)");
+                }
                 robotBodies_.push_back(
-                    {std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(s.shape)), s.origin,
-                     static_cast<int>(l), "robot link '" + robot.links()[l].name + "'",
+                    {std::make_unique<fcl::CollisionObjectd>(geometry), s.origin, static_cast<int>(l), label,
                      robot.isInSubtree(static_cast<int>(l), model_->toolLink()), s.shape.boundingRadius()});
+            }
 
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
         {

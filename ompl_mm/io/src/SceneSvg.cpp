@@ -1,5 +1,7 @@
 #include "ompl_mm/io/SceneSvg.h"
 
+#include "ompl_mm/io/ScenePicture.h"
+
 #include "ompl_core/io/SvgCanvas.h"
 #include "ompl_core/io/TextFormat.h"
 #include "ompl_mm/io/PlanColours.h"
@@ -9,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <locale>
 #include <optional>
@@ -23,275 +26,17 @@ namespace ompl_mm
         // the picture is laid out in pixels: world metres are mapped into a band between a title strip
         // and a legend strip, so line widths and fonts look the same for any scene size
         const ompl_core::SvgCanvas::Layout LAYOUT;  // the canvas's default strips
-        constexpr double MARGIN_FRACTION = 0.05;
-        constexpr unsigned int SUB_STEPS = 20;
-        constexpr double HEIGHT_QUANTUM = 1e-6;
+        // an arm's picture: the top and side views together this wide, a second title row holding
+        // each view's caption and scale bar
+        const ompl_core::SvgCanvas::Layout TWO_VIEW_LAYOUT{1400.0, 56.0, 36.0};
+        constexpr double TITLE_Y = 21.0;    // baseline of the title row, pixels
+        constexpr double CAPTION_Y = 46.0;  // baseline of the captions' row, pixels
 
         const char *const ARROW_COLOUR = "#8b0000";
         const std::string ARROW_STYLE = std::string("stroke=\"") + ARROW_COLOUR +
                                         R"svg(" stroke-width="2" marker-end="url(#arrowhead)")svg";
 
-        /** An upright outline seen from above: a polygon, or a circle when radius > 0. */
-        struct Footprint
-        {
-            std::vector<Eigen::Vector2d> corners;
-            Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
-            double radius{0.0};
-        };
-
-        /** An obstacle or a support surface, drawn lowest top first (painter's order). */
-        struct GroundItem
-        {
-            long long topKey;  // top height in HEIGHT_QUANTUM units, so equal heights compare equal
-            bool isSurface;    // at equal height the surface (an obstacle's top) is drawn above it
-            bool faint;        // an obstacle at or under the lowest surface (a floor slab)
-            Footprint footprint;
-            std::string name;
-        };
-
-        /** A goal marker with its label. */
-        struct GoalMarker
-        {
-            Eigen::Vector2d at;
-            std::string label;
-            std::string colour;
-        };
-
-        /** The tool point's course along one labelled segment. */
-        struct ToolSegment
-        {
-            PrimitiveKind kind;
-            std::vector<Eigen::Vector2d> points;
-        };
-
-        /** Everything to draw, in world metres. */
-        struct Picture
-        {
-            std::vector<GroundItem> ground;
-            std::vector<Footprint> objectStart;
-            std::vector<Footprint> objectEnd;  // empty without a path
-            std::vector<GoalMarker> goals;
-            std::vector<ToolSegment> segments;
-            std::vector<Eigen::Vector2d> waypoints;
-            std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> pushArrows;
-            std::optional<Footprint> robotStart;
-            std::optional<Footprint> robotEnd;
-        };
-
-        /** The canvas for a world box: a margin around it, at least a metre across, so a lone
-            object is not blown up to the whole picture. */
-        ompl_core::SvgCanvas fitCanvas(const Eigen::AlignedBox2d &box)
-        {
-            const Eigen::Vector2d half = (box.sizes() / 2.0).cwiseMax(0.5);
-            const Eigen::Vector2d margin = Eigen::Vector2d::Constant(MARGIN_FRACTION * 2.0 * half.maxCoeff());
-            return ompl_core::SvgCanvas(
-                Eigen::AlignedBox2d(box.center() - half - margin, box.center() + half + margin), LAYOUT);
-        }
-
-        /** Footprint of an upright shape centred at (x, y) turned by yaw: a rectangle, or a circle
-            (a mesh's: the circle about its z axis that holds it). */
-        Footprint footprint(const Shape &shape, const Eigen::Vector2d &centre, double yaw)
-        {
-            Footprint f{{}, centre, shape.kind == Shape::Kind::Box ? 0.0 : shape.footprintRadius()};
-            const Eigen::Rotation2Dd rotation(yaw);
-            const Eigen::Vector2d half = shape.boxSize.head<2>() / 2.0;
-            if (shape.kind == Shape::Kind::Box)
-                for (const Eigen::Vector2d &sign : {Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1),
-                                                    Eigen::Vector2d(1, 1), Eigen::Vector2d(-1, 1)})
-                    f.corners.push_back(centre + rotation * half.cwiseProduct(sign));
-            return f;
-        }
-
-        /** An obstacle's footprint, using only its pose's rotation about z. */
-        Footprint footprint(const Shape &shape, const Eigen::Isometry3d &pose)
-        {
-            return footprint(shape, pose.translation().head<2>(),
-                             std::atan2(pose.linear()(1, 0), pose.linear()(0, 0)));
-        }
-
-        Footprint footprint(const Shape &shape, const ObjectPose &pose)
-        {
-            return footprint(shape, pose.position.head<2>(), pose.yaw);
-        }
-
-        /** World height of the highest point of a shape at a pose. */
-        double topHeight(const Shape &shape, const Eigen::Isometry3d &pose)
-        {
-            const Eigen::Matrix3d &r = pose.linear();
-            double reach = shape.kind == Shape::Kind::Mesh ? shape.boundingRadius() : shape.radius;
-            if (shape.kind == Shape::Kind::Box)
-                reach = (r.row(2).cwiseAbs().transpose().cwiseProduct(shape.boxSize / 2.0)).sum();
-            else if (shape.kind == Shape::Kind::Cylinder)
-                reach = std::abs(r(2, 2)) * shape.length / 2.0 +
-                        shape.radius * std::sqrt(std::max(0.0, 1.0 - r(2, 2) * r(2, 2)));
-            return pose.translation().z() + reach;
-        }
-
-        long long heightKey(double height)
-        {
-            return std::llround(height / HEIGHT_QUANTUM);
-        }
-
-        /** Obstacles and surfaces in painter's order; floor slabs are marked to be drawn faintly. */
-        void addGround(const Scene &scene, Picture &picture)
-        {
-            long long lowestSurface = std::numeric_limits<long long>::max();
-            for (const SupportSurface &s : scene.surfaces)
-            {
-                Footprint rectangle;
-                rectangle.corners = {s.min, {s.max.x(), s.min.y()}, s.max, {s.min.x(), s.max.y()}};
-                rectangle.centre = (s.min + s.max) / 2.0;
-                lowestSurface = std::min(lowestSurface, heightKey(s.height));
-                picture.ground.push_back({heightKey(s.height), true, false, rectangle, s.name});
-            }
-            for (const Obstacle &obstacle : scene.obstacles)
-            {
-                const long long top = heightKey(topHeight(obstacle.shape, obstacle.pose));
-                picture.ground.push_back({top, false, top <= lowestSurface,
-                                          footprint(obstacle.shape, obstacle.pose), obstacle.name});
-            }
-            std::stable_sort(
-                picture.ground.begin(), picture.ground.end(),
-                [](const GroundItem &a, const GroundItem &b)
-                { return a.topKey != b.topKey ? a.topKey < b.topKey : !a.isSurface && b.isSurface; });
-        }
-
-        /** Circle of the tool link's first round shape, where the robot stands in this state. */
-        std::optional<Footprint> robotFootprint(const ManipulationStateSpace &space,
-                                                const ompl::base::State *state)
-        {
-            const ManipulationModel &model = *space.model();
-            // a robot whose joints are all prismatic is drawn as the round shape of its tool link
-            if (!model.robot().allJointsPrismatic())
-                return std::nullopt;
-            for (const LinkShape &linkShape : model.robot().links()[model.toolLink()].shapes)
-            {
-                if (linkShape.shape.kind == Shape::Kind::Box)
-                    continue;
-                const Eigen::Isometry3d link = model.robot().linkFrame(
-                    space.robotValues(state), model.scene().robot.basePose, model.toolLink());
-                return Footprint{
-                    {}, (link * linkShape.origin).translation().head<2>(), linkShape.shape.footprintRadius()};
-            }
-            return std::nullopt;
-        }
-
-        void addGoals(const ManipulationSetup &setup, const ompl::base::State *start, Picture &picture)
-        {
-            const ManipulationStateSpace &space = *setup.manipulationSpace();
-            const Scene &scene = space.model()->scene();
-            for (const ObjectGoal &goal : scene.objectGoals)
-            {
-                if (!goal.position[0] || !goal.position[1])
-                    continue;
-                const int object = scene.objectIndex(goal.object);
-                picture.goals.push_back({Eigen::Vector2d(*goal.position[0], *goal.position[1]),
-                                         "goal " + goal.object,
-                                         object < 0 ? ROBOT_COLOUR : objectColour(object)});
-            }
-            const std::vector<GoalCoordinate> &joints = scene.robotGoal.joints;
-            const bool complete = joints.size() == space.robotDimension() &&
-                                  std::all_of(joints.begin(), joints.end(),
-                                              [](const GoalCoordinate &j) { return j.has_value(); });
-            if (!space.model()->robot().allJointsPrismatic() || !complete)
-                return;
-            ompl::base::ScopedState<> goal(setup.getStateSpace());
-            space.copyState(goal.get(), start);
-            for (std::size_t j = 0; j < joints.size(); ++j)
-                space.robotValues(goal.get())[j] = *joints[j];
-            picture.goals.push_back({space.toolPosition(goal.get()).head<2>(), "goal robot", ROBOT_COLOUR});
-        }
-
-        /** Tool course (interpolated as the space moves the robot), waypoints and push arrows. */
-        void addPath(const ManipulationSetup &setup, const ManipulationPath &path, Picture &picture)
-        {
-            const ManipulationStateSpace &space = *setup.manipulationSpace();
-            ompl::base::ScopedState<> between(setup.getStateSpace());
-            const std::vector<SegmentLabel> &labels = path.labels();  // checked once, not per waypoint
-            for (std::size_t i = 0; i < path.getStateCount(); ++i)
-            {
-                picture.waypoints.push_back(space.toolPosition(path.getState(i)).head<2>());
-                if (i + 1 == path.getStateCount() || i >= labels.size())
-                    continue;
-                const SegmentLabel &label = labels[i];
-                ToolSegment segment{label.kind, {}};
-                for (unsigned int k = 0; k <= SUB_STEPS; ++k)
-                {
-                    space.interpolate(path.getState(i), path.getState(i + 1),
-                                      static_cast<double>(k) / SUB_STEPS, between.get());
-                    segment.points.push_back(space.toolPosition(between.get()).head<2>());
-                }
-                picture.segments.push_back(std::move(segment));
-                if (label.kind != PrimitiveKind::Push || label.object < 0 ||
-                    label.object >= static_cast<int>(space.objectCount()))
-                    continue;
-                const Eigen::Vector2d from = space.objectPosition(path.getState(i), label.object).head<2>();
-                const Eigen::Vector2d to = space.objectPosition(path.getState(i + 1), label.object).head<2>();
-                // a push that did not move its object has no direction to show
-                if ((to - from).norm() > 1e-6)
-                    picture.pushArrows.emplace_back(from, to);
-            }
-        }
-
-        Picture buildPicture(const ManipulationSetup &setup, const ManipulationPath *path)
-        {
-            const ompl::base::ProblemDefinitionPtr &pdef = setup.getProblemDefinition();
-            if (pdef->getStartStateCount() == 0)
-                throw ompl::Exception("writeSceneSvg", "the problem has no start state");
-            const ompl::base::State *start = pdef->getStartState(0);
-            const ManipulationStateSpace &space = *setup.manipulationSpace();
-            const Scene &scene = space.model()->scene();
-            const ompl::base::State *end = path != nullptr && path->getStateCount() > 0
-                                               ? path->getState(path->getStateCount() - 1)
-                                               : nullptr;
-
-            Picture picture;
-            addGround(scene, picture);
-            for (unsigned int i = 0; i < space.objectCount(); ++i)
-            {
-                picture.objectStart.push_back(footprint(scene.objects[i].shape, space.objectPose(start, i)));
-                if (end != nullptr)
-                    picture.objectEnd.push_back(footprint(scene.objects[i].shape, space.objectPose(end, i)));
-            }
-            addGoals(setup, start, picture);
-            picture.robotStart = robotFootprint(space, start);
-            if (end != nullptr)
-            {
-                addPath(setup, *path, picture);
-                picture.robotEnd = robotFootprint(space, end);
-            }
-            return picture;
-        }
-
-        void extend(Eigen::AlignedBox2d &box, const Footprint &f)
-        {
-            box.extend(f.centre - Eigen::Vector2d::Constant(f.radius));
-            box.extend(f.centre + Eigen::Vector2d::Constant(f.radius));
-            for (const Eigen::Vector2d &corner : f.corners)
-                box.extend(corner);
-        }
-
-        /** The world box holding everything drawn (floor slabs included: they are drawn too). */
-        Eigen::AlignedBox2d bounds(const Picture &picture)
-        {
-            Eigen::AlignedBox2d box;
-            for (const GroundItem &item : picture.ground)
-                extend(box, item.footprint);
-            for (const std::vector<Footprint> *list : {&picture.objectStart, &picture.objectEnd})
-                for (const Footprint &f : *list)
-                    extend(box, f);
-            for (const std::optional<Footprint> &robot : {picture.robotStart, picture.robotEnd})
-                if (robot)
-                    extend(box, *robot);
-            for (const GoalMarker &goal : picture.goals)
-                box.extend(goal.at);
-            for (const ToolSegment &segment : picture.segments)
-                for (const Eigen::Vector2d &p : segment.points)
-                    box.extend(p);
-            if (box.isEmpty())
-                box.extend(Eigen::Vector2d::Zero());
-            return box;
-        }
+        using namespace picture;
 
         /** One element for a footprint: a circle or a polygon; attributes are written verbatim. */
         void writeFootprint(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Footprint &f,
@@ -330,6 +75,44 @@ namespace ompl_mm
                                    ? fillStyle("surface", SURFACE_COLOUR, "1")
                                    : fillStyle("obstacle", OBSTACLE_COLOUR, item.faint ? "0.25" : "1"),
                                item.name);
+            // a surface seen edge-on: a light band along the top of the obstacle under it
+            for (const SurfaceLine &line : picture.surfaceLines)
+                canvas.writePolyline(out, {line.from, line.to},
+                                     std::string(R"(class="surface" fill="none" stroke=")") + SURFACE_COLOUR +
+                                         R"(" stroke-width="3")",
+                                     "<title>" + ompl_core::xmlEscaped(line.name) + "</title>");
+        }
+
+        /** "#rrggbb" of a grey, level 0 (black) to 1 (white). */
+        std::string grey(double level)
+        {
+            char text[8];
+            const int byte = static_cast<int>(std::lround(255.0 * std::clamp(level, 0.0, 1.0)));
+            std::snprintf(text, sizeof text, "#%02x%02x%02x", byte, byte, byte);
+            return text;
+        }
+
+        /** Attributes of the arm at fraction t of its poses (0 the first, 1 the last): faint and light
+            to opaque and dark, as onion skins (the group's opacity, so a pose's own links do not add up). */
+        std::string armPoseStyle(double t)
+        {
+            return "opacity=\"" + ompl_core::SvgCanvas::number(0.3 + 0.7 * t) + "\" fill=\"" +
+                   grey(0.88 - 0.39 * t) + "\" stroke=\"" + grey(0.47 - 0.35 * t) + "\" stroke-width=\"1\"";
+        }
+
+        /** Each arm pose as a group of its links' outlines, in the path's order. */
+        void writeArmPoses(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Picture &picture)
+        {
+            const std::size_t n = picture.armPoses.size();
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                const double t = n > 1 ? static_cast<double>(i) / static_cast<double>(n - 1) : 1.0;
+                out << "<g class=\"arm-pose\" " << armPoseStyle(t) << "><title>"
+                    << ompl_core::xmlEscaped(picture.armPoses[i].caption) << "</title>\n";
+                for (const Footprint &link : picture.armPoses[i].links)
+                    writeFootprint(out, canvas, link, "class=\"arm-link\"", "");
+                out << "</g>\n";
+            }
         }
 
         void writeObjectsAndRobot(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Scene &scene,
@@ -360,6 +143,13 @@ namespace ompl_mm
                     << canvas.pointList(segment.points) << "\"><title>" << primitiveKindName(segment.kind)
                     << "</title></polyline>\n";
             }
+            // a carried object's centre stays near the tool point: its course is a thin core of the tool's
+            for (const ToolSegment &course : picture.carried)
+                canvas.writePolyline(
+                    out, course.points,
+                    std::string(R"(class="carried-path" fill="none" stroke=")") +
+                        objectColour(course.object) +
+                        R"(" stroke-width="1" stroke-linecap="round" stroke-linejoin="round")");
             for (const auto &[from, to] : picture.pushArrows)
                 ompl_core::SvgCanvas::writeLine(out, canvas.map(from), canvas.map(to),
                                                 std::string("class=\"push-arrow\" ") + ARROW_STYLE);
@@ -429,8 +219,7 @@ namespace ompl_mm
             return std::pow(10.0, std::floor(std::log10(metresAcross / 4.0)));
         }
 
-        void writeTitleAndScale(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Scene &scene,
-                                const ManipulationPath *path)
+        void writeTitle(std::ostream &out, const Scene &scene, const ManipulationPath *path)
         {
             std::string title = "scene " + (scene.name.empty() ? std::string("(unnamed)") : scene.name);
             if (path != nullptr)
@@ -438,19 +227,30 @@ namespace ompl_mm
                     ": " + std::to_string(path->getStateCount()) + " waypoints, tool path " +
                     ompl_core::SvgCanvas::number(path->getStateCount() > 0 ? path->toolPathLength() : 0.0) +
                     " m";
-            ompl_core::SvgCanvas::writeText(out, {12.0, 21.0}, title,
+            ompl_core::SvgCanvas::writeText(out, {12.0, TITLE_Y}, title,
                                             "class=\"title\" font-size=\"15\" font-weight=\"bold\"");
+        }
 
-            const double metres = scaleBarLength(LAYOUT.widthPx / canvas.scale());
+        /** A view's caption (none when empty) at its left and its scale bar at its right, on the row
+            whose baseline is y pixels. */
+        void writeCaptionAndScale(std::ostream &out, const ompl_core::SvgCanvas &canvas,
+                                  const std::string &caption, double y)
+        {
+            if (!caption.empty())
+                ompl_core::SvgCanvas::writeText(out, {12.0, y}, caption,
+                                                "class=\"caption\" font-size=\"13\" fill=\"#444444\"");
+            const double metres = scaleBarLength(canvas.width() / canvas.scale());
             const double length = metres * canvas.scale();
-            const double right = LAYOUT.widthPx - 12.0;
-            out << "<path class=\"scale-bar\" d=\"M" << ompl_core::SvgCanvas::number(right - length)
-                << ",12.00 V20.00 H" << ompl_core::SvgCanvas::number(right)
-                << " V12.00\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>\n";
+            const double right = canvas.width() - 12.0;
+            out << "<path class=\"scale-bar\" d=\"M" << ompl_core::SvgCanvas::number(right - length) << ","
+                << ompl_core::SvgCanvas::number(y - 9.0) << " V" << ompl_core::SvgCanvas::number(y - 1.0)
+                << " H" << ompl_core::SvgCanvas::number(right) << " V"
+                << ompl_core::SvgCanvas::number(y - 9.0)
+                << "\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>\n";
             std::ostringstream label;
             label.imbue(std::locale::classic());
             label << metres << " m";
-            ompl_core::SvgCanvas::writeText(out, {right - length - 6.0, 21.0}, label.str(),
+            ompl_core::SvgCanvas::writeText(out, {right - length - 6.0, y}, label.str(),
                                             "class=\"scale-label\" font-size=\"12\" text-anchor=\"end\"");
         }
 
@@ -482,23 +282,104 @@ namespace ompl_mm
             ompl_core::SvgCanvas::writeLine(out, {x, y}, {x + 28, y}, ARROW_STYLE);
             ompl_core::SvgCanvas::writeText(out, {x + 34, y + 4}, "pushed object", text);
         }
+
+        /** The legend's entry for the arm's poses, right of writeLegend()'s entries (which end
+            before x 790). */
+        void writeArmLegend(std::ostream &out, const ompl_core::SvgCanvas &canvas)
+        {
+            const double y = canvas.height() - TWO_VIEW_LAYOUT.legendPx / 2.0;
+            const double x = 790.0;
+            for (int k = 0; k < 3; ++k)
+                out << "<rect class=\"legend\" x=\"" << ompl_core::SvgCanvas::number(x + 9.0 * k) << "\" y=\""
+                    << ompl_core::SvgCanvas::number(y - 7.0) << "\" width=\"12\" height=\"14\" "
+                    << armPoseStyle(k / 2.0) << "/>\n";
+            ompl_core::SvgCanvas::writeText(out, {x + 38.0, y + 4.0}, "arm at the start, mode switches, end",
+                                            "class=\"legend\" font-size=\"12\"");
+        }
+
+        /** The arrowhead of the push arrows, for the picture's defs. */
+        std::string arrowDefs()
+        {
+            return std::string(R"(<marker id="arrowhead" viewBox="0 0 10 10" refX="9" refY="5" )") +
+                   R"(markerWidth="5" markerHeight="5" orient="auto"><path d="M0,0 L10,5 L0,10 z" fill=")" +
+                   ARROW_COLOUR + "\"/></marker>";
+        }
+
+        /** One view's drawing, in painter's order, without labels. */
+        void writeView(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Scene &scene,
+                       const Picture &picture)
+        {
+            writeGround(out, canvas, picture);
+            writeArmPoses(out, canvas, picture);
+            writeObjectsAndRobot(out, canvas, scene, picture);
+            writePath(out, canvas, picture);
+        }
+
+        /** The top view alone, LAYOUT wide (a mobile robot's picture). */
+        void writeTopView(std::ostream &out, const Scene &scene, const Picture &top,
+                          const ManipulationPath *path)
+        {
+            const ompl_core::SvgCanvas canvas(padded(bounds(top)), LAYOUT);
+            canvas.writeHeader(out, arrowDefs());
+            writeView(out, canvas, scene, top);
+            writeLabels(out, canvas, scene, top);
+            writeTitle(out, scene, path);
+            writeCaptionAndScale(out, canvas, "", TITLE_Y);
+            writeLegend(out, canvas);
+            ompl_core::SvgCanvas::writeFooter(out);
+        }
+
+        /** The canvas of a view of the world box (padded) whose drawing band is band pixels high. */
+        ompl_core::SvgCanvas viewCanvas(const Eigen::AlignedBox2d &world, double band)
+        {
+            ompl_core::SvgCanvas::Layout layout = TWO_VIEW_LAYOUT;
+            layout.widthPx = band * world.sizes().x() / world.sizes().y();
+            return ompl_core::SvgCanvas(world, layout);
+        }
+
+        /** The top and the side view side by side, each at the scale that fits it into a common
+            height, TWO_VIEW_LAYOUT wide together (an arm's picture). */
+        void writeTwoViews(std::ostream &out, const Scene &scene, const Picture &top, const Picture &side,
+                           const ManipulationPath *path)
+        {
+            const Eigen::AlignedBox2d topWorld = padded(bounds(top));
+            const Eigen::AlignedBox2d sideWorld = padded(bounds(side));
+            const double band = TWO_VIEW_LAYOUT.widthPx / (topWorld.sizes().x() / topWorld.sizes().y() +
+                                                           sideWorld.sizes().x() / sideWorld.sizes().y());
+            const ompl_core::SvgCanvas topCanvas = viewCanvas(topWorld, band);
+            const ompl_core::SvgCanvas sideCanvas = viewCanvas(sideWorld, band);
+            // the whole picture, one pixel a unit, for the header and the legend
+            const ompl_core::SvgCanvas whole(
+                Eigen::AlignedBox2d(Eigen::Vector2d::Zero(), Eigen::Vector2d(TWO_VIEW_LAYOUT.widthPx, band)),
+                TWO_VIEW_LAYOUT);
+            whole.writeHeader(out, arrowDefs());
+            out << "<g class=\"top-view\">\n";
+            writeView(out, topCanvas, scene, top);
+            writeLabels(out, topCanvas, scene, top);
+            writeCaptionAndScale(out, topCanvas, "top view (x\u2013y)", CAPTION_Y);
+            out << "</g>\n<g class=\"side-view\" transform=\"translate("
+                << ompl_core::SvgCanvas::number(topCanvas.width()) << ",0)\">\n";
+            ompl_core::SvgCanvas::writeLine(out, {0.0, TWO_VIEW_LAYOUT.titlePx - 20.0},
+                                            {0.0, whole.height() - TWO_VIEW_LAYOUT.legendPx},
+                                            R"(class="view-separator" stroke="#cccccc" stroke-width="1")");
+            writeView(out, sideCanvas, scene, side);  // the objects' colours name them here
+            writeCaptionAndScale(out, sideCanvas, "side view (x\u2013z)", CAPTION_Y);
+            out << "</g>\n";
+            writeTitle(out, scene, path);
+            writeLegend(out, whole);
+            writeArmLegend(out, whole);
+            ompl_core::SvgCanvas::writeFooter(out);
+        }
     }  // namespace
 
     void writeSceneSvg(std::ostream &out, const ManipulationSetup &setup, const ManipulationPath *path)
     {
         const Scene &scene = setup.model()->scene();
-        const Picture picture = buildPicture(setup, path);
-        const ompl_core::SvgCanvas canvas = fitCanvas(bounds(picture));
-        canvas.writeHeader(
-            out, std::string(R"(<marker id="arrowhead" viewBox="0 0 10 10" refX="9" refY="5" )") +
-                     R"(markerWidth="5" markerHeight="5" orient="auto"><path d="M0,0 L10,5 L0,10 z" fill=")" +
-                     ARROW_COLOUR + "\"/></marker>");
-        writeGround(out, canvas, picture);
-        writeObjectsAndRobot(out, canvas, scene, picture);
-        writePath(out, canvas, picture);
-        writeLabels(out, canvas, scene, picture);
-        writeTitleAndScale(out, canvas, scene, path);
-        writeLegend(out, canvas);
-        ompl_core::SvgCanvas::writeFooter(out);
+        const Picture top = topPicture(setup, path);
+        // a mobile robot is seen whole from above; an arm also needs the height it works at
+        if (setup.model()->robot().allJointsPrismatic())
+            writeTopView(out, scene, top, path);
+        else
+            writeTwoViews(out, scene, top, sidePicture(setup, path), path);
     }
 }  // namespace ompl_mm

@@ -1,5 +1,6 @@
 #include "ompl_mm/robot/MeshFile.h"
 
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
@@ -75,6 +76,9 @@ namespace ompl_mm
             return cached->second;
 
         Assimp::Importer importer;
+        // COLLADA files declare an up axis (most Z_UP); assimp would turn them to Y_UP, while ROS
+        // (RViz, geometric_shapes) takes their coordinates as they are, z up
+        importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
         const aiScene *scene =
             importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                         aiProcess_PreTransformVertices | aiProcess_SortByPType);

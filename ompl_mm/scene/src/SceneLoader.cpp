@@ -131,11 +131,17 @@ namespace ompl_mm
 
         void SceneParser::readRobot(const ompl_core::XmlElement &element)
         {
-            element.checkAttributes({"urdf", "tool_link"});
+            element.checkAttributes({"urdf", "tool_link", "meshes"});
             RobotSpec &robot = scene_.robot;
             robot.where = element.where();
             robot.urdfFile = resolveUrdf(element);
             robot.toolLink = element.text("tool_link");
+            const std::string meshes = element.text("meshes", "exact");
+            if (meshes == "convex_hull")
+                robot.meshCollision = MeshCollision::ConvexHull;
+            else if (meshes != "exact")
+                element.fail("meshes", "attribute 'meshes' of " + element.tag() +
+                                           " must be \"exact\" or \"convex_hull\", got '" + meshes + "'");
             ompl_core::FirstUses singles, toolNames;
             for (const ompl_core::XmlElement &child :
                  element.children({"origin", "tool_offset", "allow_collision", "tool"}))

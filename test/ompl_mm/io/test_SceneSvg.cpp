@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <map>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -10,8 +13,11 @@
 #include "ompl_mm/io/SceneSvg.h"
 
 #include "common/MobileBlocked.h"
+#include "ompl_core/run/GlobalSeed.h"
 
 #include <ompl/base/ScopedState.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/util/Console.h>
 
 using namespace ompl_mm;
 using namespace ompl_mm::test;
@@ -43,6 +49,15 @@ namespace
     {
         std::vector<const tinyxml2::XMLElement *> found;
         collect(doc.RootElement(), cls, found);
+        return found;
+    }
+
+    /** The elements inside group whose class attribute is exactly cls. */
+    std::vector<const tinyxml2::XMLElement *> byClassIn(const tinyxml2::XMLElement *group,
+                                                        const std::string &cls)
+    {
+        std::vector<const tinyxml2::XMLElement *> found;
+        collect(group->FirstChildElement(), cls, found);
         return found;
     }
 
@@ -81,6 +96,81 @@ namespace
         space.setObjectPose(state.get(), obj2, pose);
         path.appendLabelled(state.get(), {PrimitiveKind::Push, obj2});
         return path;
+    }
+
+    /** The pixel box of a polygon's points, a circle, or all of a group's elements. */
+    Eigen::AlignedBox2d pixelBox(const tinyxml2::XMLElement *e)
+    {
+        Eigen::AlignedBox2d box;
+        if (std::string(e->Name()) == "circle")
+        {
+            const Eigen::Vector2d c(e->DoubleAttribute("cx"), e->DoubleAttribute("cy"));
+            box.extend(c - Eigen::Vector2d::Constant(e->DoubleAttribute("r")));
+            box.extend(c + Eigen::Vector2d::Constant(e->DoubleAttribute("r")));
+        }
+        else if (e->Attribute("points") != nullptr)
+        {
+            std::istringstream points(e->Attribute("points"));
+            double x = 0, y = 0;
+            char comma = 0;
+            while (points >> x >> comma >> y)
+                box.extend(Eigen::Vector2d(x, y));
+        }
+        for (const tinyxml2::XMLElement *child = e->FirstChildElement(); child != nullptr;
+             child = child->NextSiblingElement())
+            if (std::string(child->Name()) != "title")
+                box.extend(pixelBox(child));
+        return box;
+    }
+
+    /** The side view's pixels to world (x, z) metres, measured on the floor of KUKA TABLE, a slab
+        from x -1 to 1 whose top is at z -0.01 (independent of the writer's own mapping). */
+    struct SideScale
+    {
+        explicit SideScale(const tinyxml2::XMLElement *sideView)
+        {
+            const tinyxml2::XMLElement *floor = named(byClassIn(sideView, "obstacle"), "floor");
+            EXPECT_NE(floor, nullptr);
+            if (floor == nullptr)
+                return;
+            const Eigen::AlignedBox2d box = pixelBox(floor);
+            perMetre = box.sizes().x() / 2.0;
+            left = box.min().x();
+            floorTop = box.min().y();
+        }
+        /** World (x, z) of a pixel. */
+        Eigen::Vector2d world(const Eigen::Vector2d &pixel) const
+        {
+            return {-1.0 + (pixel.x() - left) / perMetre, -0.01 + (floorTop - pixel.y()) / perMetre};
+        }
+        double perMetre{1.0};
+        double left{0.0};
+        double floorTop{0.0};
+    };
+
+    /** The world (x, z) box an arm pose covers in the side view. */
+    Eigen::AlignedBox2d worldBox(const SideScale &scale, const tinyxml2::XMLElement *pose)
+    {
+        const Eigen::AlignedBox2d pixels = pixelBox(pose);
+        Eigen::AlignedBox2d box;
+        box.extend(scale.world(pixels.min())).extend(scale.world(pixels.max()));
+        return box;
+    }
+
+    /** KUKA TABLE's arm at zero seen from the side (robots/kuka_lwr.urdf): the palm, 0.22 m along x,
+        is its widest part; the base's cylinder starts at z 0 and the fingers end 1.10 + 0.245 + 0.05 m up. */
+    void expectArmStraightUp(const SideScale &scale, const tinyxml2::XMLElement *pose, double tolerance)
+    {
+        const Eigen::AlignedBox2d box = worldBox(scale, pose);
+        EXPECT_NEAR(box.min().x(), -0.11, tolerance);
+        EXPECT_NEAR(box.max().x(), 0.11, tolerance);
+        EXPECT_NEAR(box.min().y(), 0.0, tolerance);
+        EXPECT_NEAR(box.max().y(), 1.395, tolerance);
+    }
+
+    Scene kukaTableScene()
+    {
+        return loadScene(OMPL_MM_SCENES_DIR "/kuka_table.xml");
     }
 
     std::size_t countStroke(const tinyxml2::XMLDocument &doc, const std::string &colour)
@@ -194,4 +284,121 @@ TEST(SceneSvg, WorldYIsUpAndTheScaleIsTheSameOnBothAxes)
                              (o[3].start.position.y() - o[2].start.position.y());
     EXPECT_NEAR(perMetreX, perMetreY, 0.01);
     EXPECT_NEAR(obj1->DoubleAttribute("r") / o[0].shape.radius, perMetreX, 0.05);
+}
+
+TEST(SceneSvg, MobileRobotHasTheTopViewAlone)
+{
+    const ManipulationSetup setup(mobileBlockedScene());
+    const ManipulationPath path = pushPath(setup);
+    tinyxml2::XMLDocument doc;
+    ASSERT_EQ(doc.Parse(render(setup, &path).c_str()), tinyxml2::XML_SUCCESS) << doc.ErrorStr();
+    EXPECT_TRUE(byClass(doc, "side-view").empty());
+    EXPECT_TRUE(byClass(doc, "caption").empty());
+    EXPECT_TRUE(byClass(doc, "arm-pose").empty());
+    EXPECT_TRUE(byClass(doc, "carried-path").empty());
+    EXPECT_EQ(byClass(doc, "scale-bar").size(), 1u);
+    EXPECT_DOUBLE_EQ(doc.RootElement()->DoubleAttribute("width"), 800.0);
+}
+
+TEST(SceneSvg, ArmSceneAddsASideViewWithTheArmAtItsStartPose)
+{
+    const Scene scene = kukaTableScene();
+    const ManipulationSetup setup(scene);
+    tinyxml2::XMLDocument doc;
+    ASSERT_EQ(doc.Parse(render(setup, nullptr).c_str()), tinyxml2::XML_SUCCESS) << doc.ErrorStr();
+
+    const auto captions = byClass(doc, "caption");
+    ASSERT_EQ(captions.size(), 2u);
+    EXPECT_STREQ(captions[0]->GetText(), "top view (x\u2013y)");
+    EXPECT_STREQ(captions[1]->GetText(), "side view (x\u2013z)");
+    EXPECT_EQ(byClass(doc, "scale-bar").size(), 2u);
+    const auto sideViews = byClass(doc, "side-view");
+    ASSERT_EQ(sideViews.size(), 1u);
+    const tinyxml2::XMLElement *side = sideViews[0];
+    // the side view stands right of the top view
+    double dx = 0, dy = 0;
+    ASSERT_EQ(std::sscanf(side->Attribute("transform"), "translate(%lf,%lf)", &dx, &dy), 2);
+    EXPECT_GT(dx, 100.0);
+    EXPECT_LT(dx, doc.RootElement()->DoubleAttribute("width") - 100.0);
+
+    EXPECT_EQ(byClassIn(side, "obstacle").size(), scene.obstacles.size());
+    EXPECT_EQ(byClassIn(side, "surface").size(), scene.surfaces.size());
+    EXPECT_EQ(byClassIn(side, "object-start").size(), scene.objects.size());
+    EXPECT_TRUE(byClassIn(side, "object-end").empty());
+    const auto poses = byClassIn(side, "arm-pose");
+    ASSERT_EQ(poses.size(), 1u) << "the start alone without a path";
+    expectArmStraightUp(SideScale(side), poses[0], 2e-3);
+
+    // table 1's top (0.5 +- 0.27 in x, 0.38 to 0.43 in z), seen from the side
+    const tinyxml2::XMLElement *top = named(byClassIn(side, "obstacle"), "table1_top");
+    ASSERT_NE(top, nullptr);
+    const SideScale scale(side);
+    const Eigen::AlignedBox2d pixels = pixelBox(top);
+    EXPECT_NEAR(scale.world(pixels.min()).x(), 0.23, 2e-3);
+    EXPECT_NEAR(scale.world(pixels.max()).x(), 0.77, 2e-3);
+    EXPECT_NEAR(scale.world(pixels.min()).y(), 0.43, 2e-3);
+    EXPECT_NEAR(scale.world(pixels.max()).y(), 0.38, 2e-3);
+}
+
+TEST(SceneSvg, ArmPathDrawsTheArmAtStartEveryModeSwitchAndEnd)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const Scene scene = kukaTableScene();
+    ompl_core::reseedOmpl(1);
+    ManipulationSetup setup(scene);
+    setup.mopl()->setSeed(1);
+    // far above the few hundred iterations the seed needs, so a regression fails quickly
+    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(5000)),
+              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const ManipulationPath &path = setup.manipulationPath();
+    tinyxml2::XMLDocument doc;
+    ASSERT_EQ(doc.Parse(render(setup, &path).c_str()), tinyxml2::XML_SUCCESS) << doc.ErrorStr();
+    const auto sideViews = byClass(doc, "side-view");
+    ASSERT_EQ(sideViews.size(), 1u);
+    const tinyxml2::XMLElement *side = sideViews[0];
+
+    // one pose at the start of each primitive application (a run of equal labels) and one at the end
+    const std::map<std::string, unsigned int> counts = path.primitiveCounts();
+    const unsigned int runs = std::accumulate(counts.begin(), counts.end(), 0u,
+                                              [](unsigned int sum, const auto &c) { return sum + c.second; });
+    EXPECT_EQ(runs, 10u) << "3 pickups, 3 transfers and the transits between them";
+    const auto poses = byClassIn(side, "arm-pose");
+    ASSERT_EQ(poses.size(), runs + 1);
+    EXPECT_EQ(byClass(doc, "arm-pose").size(), poses.size()) << "arms are drawn in the side view only";
+    EXPECT_EQ(titleOf(poses.front()).rfind("waypoint 0: ", 0), 0u);
+    EXPECT_EQ(titleOf(poses.back()), "waypoint " + std::to_string(path.getStateCount() - 1) + ": end");
+    // the arm starts and ends at zero (the goal's tolerance: 0.01 rad a joint)
+    const SideScale scale(side);
+    expectArmStraightUp(scale, poses.front(), 2e-3);
+    expectArmStraightUp(scale, poses.back(), 0.03);
+    // later poses are drawn more opaque
+    for (std::size_t i = 1; i < poses.size(); ++i)
+        EXPECT_GT(poses[i]->DoubleAttribute("opacity"), poses[i - 1]->DoubleAttribute("opacity"));
+
+    const std::vector<SegmentLabel> &labels = path.labels();
+    EXPECT_EQ(byClassIn(side, "tool-path").size(), labels.size());
+    const auto carried = byClassIn(side, "carried-path");
+    const std::size_t transfers = static_cast<std::size_t>(
+        std::count_if(labels.begin(), labels.end(),
+                      [](const SegmentLabel &l) { return l.kind == PrimitiveKind::Transfer; }));
+    ASSERT_EQ(carried.size(), transfers);
+    // each object's last carried course ends where the object ends, inside its filled outline
+    std::map<std::string, Eigen::Vector2d> lastPoint;  // by colour
+    for (const tinyxml2::XMLElement *course : carried)
+    {
+        std::istringstream points(course->Attribute("points"));
+        double x = 0, y = 0;
+        char comma = 0;
+        while (points >> x >> comma >> y)
+            lastPoint[course->Attribute("stroke")] = Eigen::Vector2d(x, y);
+    }
+    ASSERT_EQ(lastPoint.size(), 3u) << "three cylinders carried";
+    for (const auto &[colour, at] : lastPoint)
+    {
+        bool inside = false;
+        for (const tinyxml2::XMLElement *end : byClassIn(side, "object-end"))
+            inside =
+                inside || (end->Attribute("fill", colour.c_str()) != nullptr && pixelBox(end).contains(at));
+        EXPECT_TRUE(inside) << colour;
+    }
 }

@@ -1,12 +1,14 @@
-// Tests for mesh collision geometry in URDF robots: STL and OBJ files (written by the test) are read
-// through assimp, scaled, found relative to the URDF, through OMPL_MM_PACKAGE_PATH and the URDF's
-// ancestors (package://), read once per file; bad meshes are errors at the URDF's line; and MOBILE
-// BLOCKED with a mesh robot collides where the mesh is and is solved.
+// Tests for mesh collision geometry in URDF robots: STL, OBJ and COLLADA files (written by the test)
+// are read through assimp, scaled (COLLADA z up, in its unit), found relative to the URDF, through
+// OMPL_MM_PACKAGE_PATH and the URDF's ancestors (package://), read once per file; bad meshes are
+// errors at the URDF's line; MOBILE BLOCKED with a mesh robot collides where the mesh is and is
+// solved; the scene's meshes="convex_hull" fills a concave link's notch, exact meshes leave it free.
 #include "ompl_mm/robot/RobotModel.h"
 
 #include "common/InputErrors.h"
 #include "common/MobileBlocked.h"
 #include "common/ScratchDirectory.h"
+#include "ompl_mm/collision/CollisionWorld.h"
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
 
@@ -16,10 +18,13 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 using namespace ompl_mm;
 using ompl_core::test::contains;
@@ -59,6 +64,93 @@ namespace
                "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
     }
 
+    /** An L-shaped prism as ASCII STL: the square [-1, 1]^2 without its quadrant x, y > 0 (the
+        notch), for z in [-0.5, 0.5]; 20 triangles, outward. */
+    void writeLPrismStl(const fs::path &file)
+    {
+        fs::create_directories(file.parent_path());
+        const double outline[6][2] = {{-1, -1}, {1, -1}, {1, 0},
+                                      {0, 0},   {0, 1},  {-1, 1}};  // counter-clockwise
+        std::vector<std::array<Eigen::Vector3d, 3>> triangles;
+        const auto corner = [&](int i, double z)
+        { return Eigen::Vector3d(outline[i % 6][0], outline[i % 6][1], z); };
+        for (int i : {4, 5, 0, 1})  // a fan from the reflex corner 3 (the L is star-shaped about it)
+        {
+            triangles.push_back({corner(3, 0.5), corner(i, 0.5), corner(i + 1, 0.5)});
+            triangles.push_back({corner(3, -0.5), corner(i + 1, -0.5), corner(i, -0.5)});
+        }
+        for (int i = 0; i < 6; ++i)
+        {
+            triangles.push_back({corner(i, -0.5), corner(i + 1, -0.5), corner(i + 1, 0.5)});
+            triangles.push_back({corner(i, -0.5), corner(i + 1, 0.5), corner(i, 0.5)});
+        }
+        std::ofstream out(file);
+        out << "solid l\n";
+        for (const auto &t : triangles)
+        {
+            out << "facet normal 0 0 0\nouter loop\n";
+            for (const Eigen::Vector3d &v : t)
+                out << "vertex " << v.x() << " " << v.y() << " " << v.z() << "\n";
+            out << "endloop\nendfacet\n";
+        }
+        out << "endsolid l\n";
+    }
+
+    /** A flat square plate (z = 0) as ASCII STL: 2 triangles. */
+    void writePlateStl(const fs::path &file)
+    {
+        fs::create_directories(file.parent_path());
+        std::ofstream(file)
+            << "solid plate\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\nvertex 1 -1 0\n"
+               "vertex 1 1 0\nendloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\n"
+               "vertex 1 1 0\nvertex -1 1 0\nendloop\nendfacet\nendsolid plate\n";
+    }
+
+    /** A box of half sizes half (in the file's unit) as COLLADA, z up, with the given unit in
+        metres: one geometry of 12 triangles on 8 positions, instanced by a node of a visual scene. */
+    std::string boxDae(const Eigen::Vector3d &half, double meter)
+    {
+        std::ostringstream positions;
+        for (int i : {0, 1, 3, 2, 4, 5, 7, 6})  // counter-clockwise about z, bottom then top
+            positions << (i & 1 ? 1 : -1) * half.x() << " " << (i & 2 ? 1 : -1) * half.y() << " "
+                      << (i & 4 ? 1 : -1) * half.z() << " ";
+        return "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+               "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
+               "  <asset><unit name=\"unit\" meter=\"" +
+               std::to_string(meter) +
+               "\"/><up_axis>Z_UP</up_axis></asset>\n"
+               "  <library_geometries>\n"
+               "    <geometry id=\"box-mesh\" name=\"box\">\n"
+               "      <mesh>\n"
+               "        <source id=\"box-positions\">\n"
+               "          <float_array id=\"box-positions-array\" count=\"24\">" +
+               positions.str() +
+               "</float_array>\n"
+               "          <technique_common>\n"
+               "            <accessor source=\"#box-positions-array\" count=\"8\" stride=\"3\">\n"
+               "              <param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/>"
+               "<param name=\"Z\" type=\"float\"/>\n"
+               "            </accessor>\n"
+               "          </technique_common>\n"
+               "        </source>\n"
+               "        <vertices id=\"box-vertices\"><input semantic=\"POSITION\" "
+               "source=\"#box-positions\"/></vertices>\n"
+               "        <triangles count=\"12\">\n"
+               "          <input semantic=\"VERTEX\" source=\"#box-vertices\" offset=\"0\"/>\n"
+               "          <p>0 2 1 0 3 2 4 5 6 4 6 7 0 1 5 0 5 4 1 2 6 1 6 5 2 3 7 2 7 6 3 0 4 3 4 7</p>\n"
+               "        </triangles>\n"
+               "      </mesh>\n"
+               "    </geometry>\n"
+               "  </library_geometries>\n"
+               "  <library_visual_scenes>\n"
+               "    <visual_scene id=\"scene\" name=\"scene\">\n"
+               "      <node id=\"box\" name=\"box\"><instance_geometry url=\"#box-mesh\"/></node>\n"
+               "    </visual_scene>\n"
+               "  </library_visual_scenes>\n"
+               "  <scene><instance_visual_scene url=\"#scene\"/></scene>\n"
+               "</COLLADA>\n";
+    }
+
     /** A mobile base like MOBILE BLOCKED's whose body is the mesh element given (line 20). */
     std::string mobileUrdf(const std::string &meshes)
     {
@@ -92,6 +184,67 @@ namespace
         fs::create_directories(file.parent_path());
         std::ofstream(file) << text;
         return file;
+    }
+
+    /** MOBILE BLOCKED with the robot of robots/mesh_disc.urdf, attributes added to <robot>, and
+        a 2 cm cube obstacle "peg" at (0.54, 1.54, 0.25), clear of everything else; written as
+        dir/scene.xml, whose path it returns. */
+    fs::path pegScene(const fs::path &dir, const std::string &attributes)
+    {
+        std::ifstream in(std::string(OMPL_MM_SCENES_DIR) + "/mobile_blocked.xml");
+        std::string scene((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::string robot = "<robot urdf=\"robots/mobile_disc.urdf\"";
+        scene.replace(scene.find(robot), robot.size(), "<robot urdf=\"robots/mesh_disc.urdf\" " + attributes);
+        const std::string floor = "  <!-- the floor";
+        scene.insert(scene.find(floor),
+                     "  <obstacle name=\"peg\"><origin xyz=\"0.54 1.54 0.25\"/>"
+                     "<box size=\"0.02 0.02 0.02\"/></obstacle>\n");
+        std::ofstream(dir / "scene.xml") << scene;
+        return dir / "scene.xml";
+    }
+
+    /** Validity of the robot at (x, y) (objects at their start), and of the straight motion from
+        (x, y) to (x2, y2), by the setup's checkers. */
+    class RobotProbe
+    {
+    public:
+        explicit RobotProbe(ManipulationSetup &setup)
+            : setup_(setup), from_(setup.getStateSpace()), to_(setup.getStateSpace())
+        {
+            space().copyState(from_.get(), setup.getProblemDefinition()->getStartState(0));
+            space().copyState(to_.get(), from_.get());
+        }
+
+        bool valid(double x, double y)
+        {
+            test::setRobot(space(), from_.get(), x, y);
+            return setup_.getSpaceInformation()->isValid(from_.get());
+        }
+
+        bool motionValid(double x, double y, double x2, double y2)
+        {
+            test::setRobot(space(), from_.get(), x, y);
+            test::setRobot(space(), to_.get(), x2, y2);
+            return setup_.getSpaceInformation()->checkMotion(from_.get(), to_.get());
+        }
+
+    private:
+        const ManipulationStateSpace &space() const { return *setup_.manipulationSpace(); }
+
+        ManipulationSetup &setup_;
+        ompl::base::ScopedState<> from_;
+        ompl::base::ScopedState<> to_;
+    };
+
+    /** The line of the first line of text that contains part (1-based). */
+    int lineOf(const fs::path &file, const std::string &part)
+    {
+        std::ifstream in(file);
+        std::string line;
+        for (int number = 1; std::getline(in, line); ++number)
+            if (contains(line, part))
+                return number;
+        return 0;
     }
 
     class MeshGeometry : public ::testing::Test
@@ -211,4 +364,120 @@ TEST_F(MeshGeometry, MobileBlockedWithAMeshRobotCollidesWhereTheMeshIsAndIsSolve
     ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(40000)),
               ompl::base::PlannerStatus::EXACT_SOLUTION);
     EXPECT_TRUE(setup.manipulationPath().check());
+}
+
+TEST_F(MeshGeometry, ConvexHullsFillAConcaveLinksNotchWhereExactMeshesLeaveItFree)
+{
+    // the L spans x, y in [-0.12, 0.12] and z in [0.19, 0.31] about the robot, but for its notch
+    // x, y > 0; its hull also holds the notch's part with x + y <= 0.12
+    writeLPrismStl(dir_ / "robots" / "meshes" / "l.stl");
+    writeUrdf(dir_, mobileUrdf(collision("meshes/l.stl", "0.12 0.12 0.12")));
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    for (const std::string meshes : {"", "meshes=\"exact\"", "meshes=\"convex_hull\""})
+    {
+        SCOPED_TRACE(meshes);
+        const Scene scene = loadScene(pegScene(dir_, meshes).string());
+        const bool hull = meshes == "meshes=\"convex_hull\"";
+        EXPECT_EQ(scene.robot.meshCollision, hull ? MeshCollision::ConvexHull : MeshCollision::Exact);
+        const RobotModel robot = RobotModel::fromUrdfFile(scene.robot.urdfFile);
+        const TriangleMesh &mesh = *robot.links()[robot.linkIndex("body")].shapes[0].shape.mesh;
+        EXPECT_EQ(mesh.convexHull()->vertices.size(), 10u) << "the L's 12 corners but the notch's two";
+        EXPECT_LT(mesh.convexHull()->vertices.size(), mesh.vertices.size());
+        ManipulationSetup setup(scene);
+        RobotProbe probe(setup);
+        // the peg 3-5 cm deep in the notch (at x, y in [0.03, 0.05] about the robot), 3 cm from the L
+        EXPECT_EQ(probe.valid(0.5, 1.5), !hull);
+        EXPECT_EQ(probe.valid(0.51, 1.51), !hull);
+        EXPECT_EQ(probe.motionValid(0.5, 1.5, 0.51, 1.51), !hull) << "and along the way";
+        // the peg through the L's wall at x = -0.12; wholly inside the L, where only the hull is
+        // solid (an exact mesh is its triangles, a surface); clear of the hull
+        EXPECT_FALSE(probe.valid(0.66, 1.6));
+        EXPECT_EQ(probe.valid(0.64, 1.64), !hull);
+        EXPECT_TRUE(probe.valid(0.5, 1.3));
+        EXPECT_FALSE(probe.motionValid(0.5, 1.3, 0.64, 1.64)) << "through the L's wall";
+    }
+}
+
+TEST_F(MeshGeometry, AMeshesAttributeOtherThanExactOrConvexHullIsAnErrorAtItsLine)
+{
+    writeUrdf(dir_, mobileUrdf(collision("meshes/cube.stl", "0.24 0.24 0.24")));
+    const fs::path file = pegScene(dir_, "meshes=\"hull\"");
+    const std::string error = inputErrorOf([&] { loadScene(file.string()); });
+    EXPECT_EQ(error, file.string() + ":" + std::to_string(lineOf(file, "<robot urdf=")) +
+                         ": attribute 'meshes' of <robot> must be \"exact\" or \"convex_hull\", got 'hull'");
+}
+
+TEST_F(MeshGeometry, AFlatMeshHasNoConvexHullAndSaysSoAtTheScenesRobot)
+{
+    writePlateStl(dir_ / "robots" / "meshes" / "plate.stl");
+    writeUrdf(dir_, mobileUrdf(collision("meshes/plate.stl", "0.1 0.1 0.1")));
+    const fs::path file = pegScene(dir_, "meshes=\"convex_hull\"");
+    const Scene scene = loadScene(file.string());
+    const std::string error = inputErrorOf([&] { CollisionWorld world(test::makeModel(scene)); });
+    const std::string mesh = (dir_ / "robots" / "meshes" / "plate.stl").string();
+    EXPECT_TRUE(ompl_core::test::startsWith(
+        error, file.string() + ":" + std::to_string(lineOf(file, "<robot urdf=")) +
+                   ": robot link 'body': mesh '" + mesh + "': convex hull: the "))
+        << error;
+    EXPECT_TRUE(contains(error, "points are coplanar")) << error;
+    EXPECT_TRUE(contains(error, "meshes=\"exact\"")) << "the way out: " << error;
+    // exact, the plate is a mesh like any other
+    EXPECT_NO_THROW(CollisionWorld(test::makeModel(loadScene(pegScene(dir_, "").string()))));
+}
+
+TEST_F(MeshGeometry, ColladaMeshesAreReadZUpInTheirUnitAndCollideWhereTheyAre)
+{
+    // a box 0.1 x 0.2 x 0.3 m, once in metres and once in half metres (assimp would turn z up
+    // into y up and swap the box's y and z sizes)
+    std::ofstream(dir_ / "robots" / "meshes" / "box.dae") << boxDae(Eigen::Vector3d(0.05, 0.1, 0.15), 1.0);
+    std::ofstream(dir_ / "robots" / "meshes" / "box_half_metres.dae")
+        << boxDae(Eigen::Vector3d(0.1, 0.2, 0.3), 0.5);
+    for (const std::string name : {"box.dae", "box_half_metres.dae"})
+    {
+        SCOPED_TRACE(name);
+        const fs::path urdf = writeUrdf(dir_, mobileUrdf(collision("meshes/" + name, "1 1 1")));
+        const RobotModel robot = RobotModel::fromUrdfFile(urdf.string());
+        const Shape &shape = robot.links()[robot.linkIndex("body")].shapes[0].shape;
+        ASSERT_EQ(shape.kind, Shape::Kind::Mesh);
+        EXPECT_EQ(shape.mesh->triangles.size(), 12u);
+        EXPECT_LT((shape.mesh->bounds.max() - Eigen::Vector3d(0.05, 0.1, 0.15)).norm(), 1e-6);
+        EXPECT_LT((shape.mesh->bounds.min() + Eigen::Vector3d(0.05, 0.1, 0.15)).norm(), 1e-6);
+        EXPECT_NEAR(shape.height(), 0.3, 1e-6);
+        EXPECT_NEAR(shape.footprintRadius(), std::hypot(0.05, 0.1), 1e-6);
+    }
+    // the box (z in [0.1, 0.4] about the robot) against the peg (x, y in [0.53, 0.55]), as
+    // triangles and as its hull (the same box)
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    for (const std::string meshes : {"", "meshes=\"convex_hull\""})
+    {
+        SCOPED_TRACE(meshes);
+        ManipulationSetup setup(loadScene(pegScene(dir_, meshes).string()));
+        RobotProbe probe(setup);
+        EXPECT_TRUE(probe.valid(0.47, 1.54)) << "x up to 0.52";
+        EXPECT_FALSE(probe.valid(0.49, 1.54)) << "x up to 0.54";
+        EXPECT_TRUE(probe.valid(0.54, 1.42)) << "y up to 1.52";
+        EXPECT_FALSE(probe.valid(0.54, 1.44)) << "y up to 1.54";
+        EXPECT_FALSE(probe.motionValid(0.47, 1.54, 0.54, 1.42)) << "past the peg's corner";
+    }
+}
+
+TEST_F(MeshGeometry, MalformedColladaIsAnErrorAtTheLinksLineNamingTheFile)
+{
+    const std::string valid = boxDae(Eigen::Vector3d(0.05, 0.1, 0.15), 1.0);
+    std::string badIndex = valid;
+    badIndex.replace(badIndex.find("<p>0 2 1"), 8, "<p>0 2 9");
+    for (const auto &[name, text] :
+         {std::pair<std::string, std::string>{"truncated.dae", valid.substr(0, 700)},
+          {"bad_index.dae", badIndex}})
+    {
+        SCOPED_TRACE(name);
+        const fs::path mesh = dir_ / "robots" / "meshes" / name;
+        std::ofstream(mesh) << text;
+        const fs::path urdf = writeUrdf(dir_, mobileUrdf(collision("meshes/" + name, "1 1 1")));
+        const std::string error = inputErrorOf([&] { RobotModel::fromUrdfFile(urdf.string()); });
+        const std::string prefix =
+            urdf.string() + ":20: link 'body': mesh '" + mesh.string() + "' cannot be read: ";
+        EXPECT_TRUE(ompl_core::test::startsWith(error, prefix)) << error;
+        EXPECT_GT(error.size(), prefix.size()) << "with assimp's reason";
+    }
 }
