@@ -50,8 +50,6 @@ namespace
     {
         const bool solved = setup.getProblemDefinition()->hasExactSolution();
         const double time = setup.getLastPlanComputationTime();
-        const ompl_mm::MOPLStatistics stats =
-            setup.mopl() ? setup.mopl()->statistics() : ompl_mm::MOPLStatistics();
         std::cout << std::fixed << std::setprecision(3) << "scene " << scene.name << ": "
                   << (solved ? "solved" : "not solved") << " in " << time << " s (planner "
                   << options.common.planner << ", seed " << options.common.seed << ")\n";
@@ -65,6 +63,9 @@ namespace
                     std::cout << ' ' << count << ' ' << kind;
             std::cout << '\n';
         }
+        if (!setup.mopl())
+            return;  // MOPL's statistics; another planner's are in its planner data (--json)
+        const ompl_mm::MOPLStatistics &stats = setup.mopl()->statistics();
         const double share = time > 0.0 ? 100.0 / time : 0.0;
         std::cout << std::setprecision(1) << "  search: " << stats.iterations << " iterations, "
                   << stats.restarts << " restarts, " << stats.collisionQueries
@@ -80,10 +81,7 @@ namespace
         ompl_mm::ManipulationSetup &setup =
             apps::keepUntilExit(std::make_unique<ompl_mm::ManipulationSetup>(scene));
         if (options.common.planner != scene.planner)
-        {
-            setup.setPlannerByName(options.common.planner);
-            setup.applyParameters(scene.plannerParams);
-        }
+            setup.selectPlanner(options.common.planner);
         setup.applyParameters(options.common.parameterSettings());
         if (options.common.listParams)
         {

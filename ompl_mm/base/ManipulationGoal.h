@@ -2,7 +2,7 @@
 
 #include "ompl_mm/base/PartialState.h"
 
-#include <ompl/base/goals/GoalRegion.h>
+#include <ompl/base/goals/GoalSampleableRegion.h>
 #include <ompl/util/RandomNumbers.h>
 
 namespace ompl_mm
@@ -10,8 +10,9 @@ namespace ompl_mm
     /** The goal of a manipulation problem: targets for some robot joints and some object
         coordinates, every other coordinate "don't care", and every object resting on a surface.
         Besides testing states, it completes partial samples into goal states (MOPL's PROJSAMP),
-        which is how the backward tree gets its roots lazily. */
-    class ManipulationGoal : public ompl::base::GoalRegion
+        which is how the backward tree gets its roots lazily. Planners that sample goals (OMPL's
+        RRTConnect, PRM) get goal states whose free objects stay at their start poses. */
+    class ManipulationGoal : public ompl::base::GoalSampleableRegion
     {
     public:
         /** Reads the targets from the model's scene; sets the threshold to 0.
@@ -40,6 +41,12 @@ namespace ompl_mm
             @pre sample's undefined parts may hold anything. */
         void complete(const PartialState &sample, ompl::base::State *out, ompl::RNG &rng) const;
 
+        /** OMPL's hook: a goal state in which every object the goal leaves free keeps its start
+            pose (where the scene starts it) and free joints are random within their limits. */
+        void sampleGoal(ompl::base::State *state) const override;
+        /** OMPL's hook: goal states can be drawn without end. */
+        unsigned int maxSampleCount() const override;
+
         /** True when the goal defines at least one coordinate of the object. */
         bool constrainsObject(unsigned int object) const;
         /** True when the goal defines at least one robot joint. */
@@ -54,6 +61,7 @@ namespace ompl_mm
                             ompl::RNG &rng) const;
 
         const ManipulationStateSpace *space_;
+        mutable ompl::RNG rng_;  ///< draws sampleGoal()'s free joints
         RobotGoal robot_;
         std::vector<const ObjectGoal *> objects_;  ///< per object, its goal or nullptr
     };

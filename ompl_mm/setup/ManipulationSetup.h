@@ -33,13 +33,21 @@ namespace ompl_mm
             parameter. */
         explicit ManipulationSetup(const Scene &scene, const PrimitiveFactory &factory = PrimitiveFactory());
 
-        /** The planners that can plan on a ManipulationSetup: "mopl". Add your own with add(). */
+        /** The planners that can plan on a ManipulationSetup: "mopl", and OMPL's "rrtconnect",
+            "rrt" and "est", which move the robot alone (their uniform samples keep the objects at
+            their start poses; for tasks that need no manipulation). Add your own with add(). */
         static ompl_core::PlannerRegistry<ManipulationSetup> &plannerRegistry();
 
         /** Makes the registered planner called name and sets it as this setup's planner (without
             the scene's parameters: apply those with applyParameters() if wanted).
             @throws ompl_core::InputError for an unknown name. */
         void setPlannerByName(const std::string &name);
+
+        /** Makes the registered planner called name, sets it as this setup's planner and gives it
+            the scene's planner parameters that it declares (the scene writes them for its own
+            planner type, so another planner takes those it knows and leaves the rest).
+            @throws ompl_core::InputError for an unknown name or a bad value. */
+        void selectPlanner(const std::string &name);
 
         /** Sets the planner's parameters (ompl_core::applyParameters), then checks MOPL's rules
             between parameters. @throws ompl_core::InputError naming a setting's place: of a bad
@@ -60,7 +68,9 @@ namespace ompl_mm
         std::shared_ptr<MOPL> mopl() const;
 
         /** The solution as a ManipulationPath, owned by the problem definition (valid until its
-            solutions are cleared). @throws ompl::Exception when there is none. */
+            solutions are cleared). Another planner's PathGeometric takes its place as a
+            ManipulationPath of the same states, labelled from their motions.
+            @throws ompl::Exception when there is none. */
         ManipulationPath &manipulationPath() const;
         /** Mode-aware smoothing of the solution in place (ManipulationSimplifier, as MOPL applies it
             to its solutions): pointless pushes removed, `attempts` random windows replanned,

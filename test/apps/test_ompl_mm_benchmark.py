@@ -109,8 +109,8 @@ def check_bad_configs(checks, args, scratch):
          "bad value '2' for parameter 'connect_step'"),
         ("missing scene", config(scene="nowhere.xml"), 3, "not found"),
         ("non-numeric value", config(benchmark="time_limit = ten\n"), 5, "'time_limit' must be a number"),
-        ("physics planner on a geometric scene", config(planner="rrt =\n"), 8,
-         "planner 'rrt' plans a physics scene; problem 'p' is an ompl_mm scene"),
+        ("physics planner on a geometric scene", config(planner="sycloprrt =\n"), 8,
+         "planner 'sycloprrt' plans a physics scene; problem 'p' is an ompl_mm scene"),
         ("problem key no planner declares", config(problem="goal_bias = 0.1\n"), 4, "unknown key 'goal_bias'"),
         ("run count not a whole number", config(benchmark="run_count = 2.5\n"), 5, "whole number"),
     ]

@@ -44,7 +44,7 @@ namespace ompl_mm
     }  // namespace
 
     ManipulationGoal::ManipulationGoal(const ompl::base::SpaceInformationPtr &si)
-        : ompl::base::GoalRegion(si), space_(si->getStateSpace()->as<ManipulationStateSpace>())
+        : ompl::base::GoalSampleableRegion(si), space_(si->getStateSpace()->as<ManipulationStateSpace>())
     {
         setThreshold(0.0);
         const ManipulationModel &model = *space_->model();
@@ -199,5 +199,19 @@ namespace ompl_mm
             if (constrainsObject(i))
                 out << "object '" << space_->model()->scene().objects[i].name << "', ";
         out << "all objects resting" << std::endl;
+    }
+
+    void ManipulationGoal::sampleGoal(ompl::base::State *state) const
+    {
+        PartialState sample(space_);
+        sample.setRobotDefined(false);
+        for (unsigned int i = 0; i < space_->objectCount(); ++i)
+            space_->setObjectPose(sample.state(), i, space_->model()->scene().objects[i].start);
+        complete(sample, state, rng_);
+    }
+
+    unsigned int ManipulationGoal::maxSampleCount() const
+    {
+        return std::numeric_limits<unsigned int>::max();
     }
 }  // namespace ompl_mm

@@ -15,16 +15,26 @@ namespace ompl_mm
         }
     }  // namespace
 
-    ManipulationStateSampler::ManipulationStateSampler(const ManipulationStateSpace *space)
+    ManipulationStateSampler::ManipulationStateSampler(const ManipulationStateSpace *space,
+                                                       bool objectsAtStart)
         : ompl::base::StateSampler(space),
           all_(space->ompl::base::CompoundStateSpace::allocDefaultStateSampler()),
-          robot_(space->getSubspace(0)->allocStateSampler())
+          robot_(space->getSubspace(0)->allocStateSampler()),
+          objectsAtStart_(objectsAtStart)
     {
     }
 
     void ManipulationStateSampler::sampleUniform(ompl::base::State *state)
     {
-        all_->sampleUniform(state);
+        if (!objectsAtStart_)
+        {
+            all_->sampleUniform(state);
+            return;
+        }
+        robot_->sampleUniform(robotPart(state));
+        const auto *space = space_->as<ManipulationStateSpace>();
+        for (unsigned int i = 0; i < space->objectCount(); ++i)
+            space->setObjectPose(state, i, space->model()->scene().objects[i].start);
     }
 
     void ManipulationStateSampler::sampleUniformNear(ompl::base::State *state, const ompl::base::State *near,

@@ -28,8 +28,7 @@ namespace ompl_mm
         if (planner.type != scene_.planner)
         {
             ManipulationSetup::plannerRegistry().require(planner.type, planner.where);
-            setup->setPlannerByName(planner.type);
-            setup->applyParameters(scene_.plannerParams);
+            setup->selectPlanner(planner.type);
         }
         setup->applyParameters(ompl_core::benchmarkSettings(*setup->getPlanner(), problem, planner));
         setup->getPlanner()->setName(planner.label);

@@ -1,8 +1,13 @@
 #include "ompl_mm/setup/ManipulationSetup.h"
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_mm/base/ManipulationStateSampler.h"
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 #include "ompl_mm/setup/ProblemCheck.h"
+
+#include <ompl/geometric/planners/est/EST.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
 
 #include <algorithm>
 
@@ -30,6 +35,20 @@ namespace ompl_mm
                                                 ") has no collision geometry on any link: it would pass "
                                                 "through everything");
             return robot;
+        }
+
+        /** One of OMPL's planners on the setup, for tasks that need no manipulation: its uniform
+            samples keep every object at its start pose, so that it grows transits (the motion
+            validator rejects any other motion it tries). */
+        template <class Planner>
+        ompl::base::PlannerPtr robotOnly(ManipulationSetup &setup)
+        {
+            setup.getStateSpace()->setStateSamplerAllocator(
+                [](const ompl::base::StateSpace *space) {
+                    return std::make_shared<ManipulationStateSampler>(space->as<ManipulationStateSpace>(),
+                                                                      true);
+                });
+            return std::make_shared<Planner>(setup.getSpaceInformation());
         }
 
         ManipulationModelPtr makeModel(const Scene &scene)
@@ -81,6 +100,13 @@ namespace ompl_mm
             planners.add("mopl", "MOPL, the multi-modal path planner",
                          [](ManipulationSetup &setup)
                          { return std::make_shared<MOPL>(setup.getSpaceInformation(), setup.primitives()); });
+            planners.add("rrtconnect",
+                         "OMPL's RRTConnect, moving the robot alone (objects stay where they start)",
+                         robotOnly<ompl::geometric::RRTConnect>);
+            planners.add("rrt", "OMPL's RRT, moving the robot alone (objects stay where they start)",
+                         robotOnly<ompl::geometric::RRT>);
+            planners.add("est", "OMPL's EST, moving the robot alone (objects stay where they start)",
+                         robotOnly<ompl::geometric::EST>);
             return planners;
         }();
         return registry;
@@ -89,6 +115,16 @@ namespace ompl_mm
     void ManipulationSetup::setPlannerByName(const std::string &name)
     {
         setPlanner(plannerRegistry().make(name, *this));
+    }
+
+    void ManipulationSetup::selectPlanner(const std::string &name)
+    {
+        setPlannerByName(name);
+        std::vector<ompl_core::ParameterSetting> declared;
+        for (const ompl_core::ParameterSetting &setting : model_->scene().plannerParams)
+            if (planner_->params().hasParam(setting.name))
+                declared.push_back(setting);
+        applyParameters(declared);
     }
 
     std::shared_ptr<MOPL> ManipulationSetup::mopl() const
@@ -122,9 +158,19 @@ namespace ompl_mm
 
     ManipulationPath &ManipulationSetup::manipulationPath() const
     {
-        auto *path = dynamic_cast<ManipulationPath *>(pdef_->getSolutionPath().get());
-        if (!path)
+        const ompl::base::PathPtr solution = pdef_->getSolutionPath();
+        if (auto *path = dynamic_cast<ManipulationPath *>(solution.get()))
+            return *path;
+        auto *geometric = dynamic_cast<ompl::geometric::PathGeometric *>(solution.get());
+        if (!geometric)
             throw ompl::Exception("ManipulationSetup", "no manipulation path has been found");
+        // another planner's path: the same states, labelled from their motions when asked
+        auto path = std::make_shared<ManipulationPath>(si_);
+        for (const ompl::base::State *state : geometric->getStates())
+            path->ompl::geometric::PathGeometric::append(state);
+        const ompl::base::PlannerSolution found = pdef_->getSolutions().front();
+        pdef_->clearSolutionPaths();
+        pdef_->addSolutionPath(path, found.approximate_, found.difference_, found.plannerName_);
         return *path;
     }
 

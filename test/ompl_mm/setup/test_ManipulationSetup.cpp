@@ -107,12 +107,14 @@ TEST(ManipulationSetup, PlansAfterTheSceneIsGone)
     EXPECT_EQ(setup->model()->scene().name, "mobile_blocked");
 }
 
-TEST(ManipulationSetup, PlannerRegistryNamesMoplAndRejectsUnknownNames)
+TEST(ManipulationSetup, PlannerRegistryNamesItsPlannersAndRejectsUnknownNames)
 {
-    EXPECT_EQ(ManipulationSetup::plannerRegistry().names(), std::vector<std::string>{"mopl"});
+    EXPECT_EQ(ManipulationSetup::plannerRegistry().names(),
+              (std::vector<std::string>{"mopl", "rrtconnect", "rrt", "est"}));
     ManipulationSetup setup(mobileBlockedScene());
-    const std::string message = inputErrorOf([&] { setup.setPlannerByName("rrtconnect"); });
-    EXPECT_NE(message.find("unknown planner 'rrtconnect' (known: mopl)"), std::string::npos) << message;
+    const std::string message = inputErrorOf([&] { setup.setPlannerByName("prm"); });
+    EXPECT_NE(message.find("unknown planner 'prm' (known: mopl, rrtconnect, rrt, est)"), std::string::npos)
+        << message;
 }
 
 TEST(ManipulationSetupInput, UnknownSceneParameterNamesItsLine)
@@ -345,4 +347,82 @@ TEST(ManipulationSetup, ToolFramesGiveTheirChains)
     EXPECT_TRUE(chain.toolPose(q.data(), scene.robot.basePose).isApprox(expected, 1e-12));
     EXPECT_EQ(ompl_core::test::exceptionOf([&] { model.toolChain("none"); }),
               "ManipulationModel: the scene declares no tool frame 'none'");
+}
+
+namespace
+{
+    Scene kukaReach()
+    {
+        return loadScene(OMPL_MM_SCENES_DIR "/kuka_reach.xml");
+    }
+}  // namespace
+
+TEST(ManipulationSetupOmplPlanners, RrtConnectPlansATransitAndItsPathIsAManipulationPath)
+{
+    const Scene scene = kukaReach();
+    ManipulationSetup setup(scene);
+    setup.selectPlanner("rrtconnect");
+    // MOPL's scene parameters are not RRTConnect's: none applied, none rejected
+    EXPECT_FALSE(setup.getPlanner()->params().hasParam("connect_step"));
+    ASSERT_EQ(setup.solve(10.0), ob::PlannerStatus::EXACT_SOLUTION);
+    const ManipulationPath &path = setup.manipulationPath();
+    EXPECT_EQ(&path, &setup.manipulationPath()) << "converted once, then kept";
+    EXPECT_TRUE(path.check());
+    EXPECT_GE(path.getStateCount(), 3u) << "the straight motion collides: a detour is needed";
+    for (const SegmentLabel &label : path.labels())
+        EXPECT_EQ(label, (SegmentLabel{PrimitiveKind::Transit, -1}));
+    const ob::State *end = path.getState(path.getStateCount() - 1);
+    EXPECT_TRUE(setup.getGoal()->isSatisfied(end));
+    for (unsigned int i = 0; i < setup.manipulationSpace()->objectCount(); ++i)
+        EXPECT_EQ(setup.manipulationSpace()->objectPosition(end, i), scene.objects[i].start.position);
+    EXPECT_EQ(setup.getProblemDefinition()->getSolutions().front().plannerName_, "RRTConnect");
+}
+
+TEST(ManipulationSetupOmplPlanners, AnotherPlannerTakesTheSceneParametersItDeclares)
+{
+    Scene scene = kukaReach();
+    scene.planner = "rrt";
+    scene.plannerParams = {{"range", "0.25", {scene.file, 70}}, {"goal_bias", "0.1", {scene.file, 71}}};
+    ManipulationSetup setup(scene);
+    EXPECT_EQ(setup.getPlanner()->params().getParam("goal_bias")->getValue(), "0.1");
+    setup.selectPlanner("rrtconnect");  // declares range, not goal_bias
+    EXPECT_EQ(setup.getPlanner()->params().getParam("range")->getValue(), "0.25");
+    setup.selectPlanner("mopl");  // declares neither
+    EXPECT_EQ(setup.getPlanner()->getName(), "MOPL");
+}
+
+TEST(ManipulationSetupOmplPlanners, GoalSamplesKeepFreeObjectsWhereTheyStart)
+{
+    const Scene scene = kukaReach();
+    ManipulationSetup setup(scene);
+    const auto &goal = *setup.manipulationGoal();
+    ob::ScopedState<> sample(setup.getStateSpace());
+    for (int k = 0; k < 20; ++k)
+    {
+        goal.sampleGoal(sample.get());
+        ASSERT_TRUE(goal.isSatisfied(sample.get()));
+        for (unsigned int i = 0; i < setup.manipulationSpace()->objectCount(); ++i)
+            ASSERT_EQ(setup.manipulationSpace()->objectPosition(sample.get(), i),
+                      scene.objects[i].start.position);
+    }
+}
+
+TEST(ManipulationSetupOmplPlanners, TheirUniformSamplesMoveTheRobotAlone)
+{
+    const Scene scene = kukaReach();
+    ManipulationSetup setup(scene);
+    setup.selectPlanner("est");
+    const ob::StateSamplerPtr sampler = setup.getStateSpace()->allocStateSampler();
+    ob::ScopedState<> a(setup.getStateSpace()), b(setup.getStateSpace());
+    sampler->sampleUniform(a.get());
+    sampler->sampleUniform(b.get());
+    const auto &space = *setup.manipulationSpace();
+    EXPECT_TRUE(space.robotMoves(a.get(), b.get()));
+    for (unsigned int i = 0; i < space.objectCount(); ++i)
+        EXPECT_EQ(space.objectPose(a.get(), i).position, scene.objects[i].start.position);
+    // MOPL's setup keeps OMPL's uniform sampling of every coordinate
+    ManipulationSetup moplSetup(scene);
+    const ob::StateSamplerPtr all = moplSetup.getStateSpace()->allocStateSampler();
+    all->sampleUniform(a.get());
+    EXPECT_NE(space.objectPosition(a.get(), 0), scene.objects[0].start.position);
 }
