@@ -37,7 +37,9 @@ namespace
         if (!apps::parseCommandLine(
                 argc, argv,
                 "Usage: ompl_mm_plan SCENE.xml [options]\n"
-                "Plans a multi-modal manipulation task (transit, push, ...) with MOPL.\n",
+                "Plans a multi-modal manipulation task (transit, push, pickup, transfer) with MOPL, or a "
+                "task\n"
+                "without manipulation with one of OMPL's planners as well.\n",
                 "planner to use (" + ompl_mm::ManipulationSetup::plannerRegistry().nameList() + ")", extra,
                 options.common, exitCode))
             return false;
