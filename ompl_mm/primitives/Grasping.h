@@ -5,8 +5,10 @@
 
 #include <ompl/util/RandomNumbers.h>
 
+#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ompl_mm
 {
@@ -68,6 +70,15 @@ namespace ompl_mm
         static constexpr unsigned int CANDIDATES = 2;
         /** Euclidean distance between two joint vectors of the robot, radians or metres. */
         double jointDistance(const double *a, const double *b) const;
+
+        /** The joint vectors of one solution of a primitive (e.g. grasp, approach, lift). */
+        using Solution = std::vector<std::vector<double>>;
+        /** Solves from the robot's joints `start`, then from random joints, ATTEMPTS times at most,
+            until CANDIDATES attempts succeed, and keeps in best the success whose joint vector
+            number `compared` is nearest to start. solve gets a solution whose vector 0 holds the
+            seed, fills it in and says whether it succeeded. False, best unchanged, when none did. */
+        bool nearestSolution(const double *start, std::size_t compared, Solution &best,
+                             const std::function<bool(Solution &)> &solve);
         /** The most a joint may turn in a short move, radians or metres. */
         static constexpr double MAX_SHORT_MOVE = 0.5;
 

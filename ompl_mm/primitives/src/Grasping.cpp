@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ompl_mm
 {
@@ -68,6 +69,31 @@ namespace ompl_mm
         for (std::size_t j = 0; j < work_.size(); ++j)
             squared += (a[j] - b[j]) * (a[j] - b[j]);
         return std::sqrt(squared);
+    }
+
+    bool Grasping::nearestSolution(const double *start, std::size_t compared, Solution &best,
+                                   const std::function<bool(Solution &)> &solve)
+    {
+        Solution trial;
+        unsigned int found = 0;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (unsigned int attempt = 0; attempt < ATTEMPTS && found < CANDIDATES; ++attempt)
+        {
+            trial.resize(1);
+            trial[0].assign(start, start + work_.size());
+            if (attempt > 0)
+                randomizeChain(trial[0].data());
+            if (!solve(trial))
+                continue;
+            ++found;
+            const double distance = jointDistance(start, trial[compared].data());
+            if (distance < nearest)
+            {
+                nearest = distance;
+                best.swap(trial);
+            }
+        }
+        return found > 0;
     }
 
     void Grasping::randomizeChain(double *q)

@@ -3,7 +3,6 @@
 #include <ompl/util/Exception.h>
 
 #include <cmath>
-#include <limits>
 #include <vector>
 
 namespace ompl_mm
@@ -56,38 +55,26 @@ namespace ompl_mm
             return false;
 
         const ObjectPose pose = space_->objectPose(from, object);
-        const unsigned int n = space_->robotDimension();
         const double *start = space_->robotValues(from);
-        std::vector<double> graspJoints(n), approachJoints(n), liftJoints(n);
-        std::vector<double> tryGrasp(n), tryApproach(n), tryLift(n);
         const Eigen::Vector3d none = Eigen::Vector3d::Zero();
-        unsigned int found = 0;
-        double nearest = std::numeric_limits<double>::infinity();
-        for (unsigned int attempt = 0; attempt < Grasping::ATTEMPTS && found < Grasping::CANDIDATES;
-             ++attempt)
-        {
-            tryGrasp.assign(start, start + n);
-            if (attempt > 0)
-                grasping_->randomizeChain(tryGrasp.data());
-            if (!grasping_->solveGrasp(object, pose, tryGrasp.data()))
-                continue;
-            tryApproach = tryLift = tryGrasp;
-            if (!grasping_->solveShortMove(none, {0.0, 0.0, -grasping_->settings().approachDistance},
-                                           tryApproach.data()) ||
-                !grasping_->solveShortMove({0.0, 0.0, settings_.liftHeight}, none, tryLift.data()))
-                continue;
-            ++found;
-            const double distance = grasping_->jointDistance(start, tryApproach.data());
-            if (distance < nearest)
+        // grasp, approach and lift, the approach nearest to where the robot is
+        Grasping::Solution joints;
+        const bool found = grasping_->nearestSolution(
+            start, 1, joints,
+            [&](Grasping::Solution &s)
             {
-                nearest = distance;
-                graspJoints.swap(tryGrasp);
-                approachJoints.swap(tryApproach);
-                liftJoints.swap(tryLift);
-            }
-        }
-        if (found == 0)
+                if (!grasping_->solveGrasp(object, pose, s[0].data()))
+                    return false;
+                s.resize(3, s[0]);
+                return grasping_->solveShortMove(none, {0.0, 0.0, -grasping_->settings().approachDistance},
+                                                 s[1].data()) &&
+                       grasping_->solveShortMove({0.0, 0.0, settings_.liftHeight}, none, s[2].data());
+            });
+        if (!found)
             return false;
+        const std::vector<double> &graspJoints = joints[0];
+        const std::vector<double> &approachJoints = joints[1];
+        const std::vector<double> &liftJoints = joints[2];
 
         const ManipulationModel &model = *space_->model();
         const Eigen::Isometry3d grasp =

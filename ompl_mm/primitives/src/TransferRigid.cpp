@@ -1,6 +1,5 @@
 #include "ompl_mm/primitives/TransferRigid.h"
 
-#include <limits>
 #include <vector>
 
 namespace ompl_mm
@@ -47,33 +46,22 @@ namespace ompl_mm
         if (places)
         {
             // a place the tool can retreat from along its axis, near the robot's joints
-            std::vector<double> place(n), retreat(n);
-            unsigned int found = 0;
-            double nearest = std::numeric_limits<double>::infinity();
-            for (unsigned int attempt = 0; attempt < Grasping::ATTEMPTS && found < Grasping::CANDIDATES;
-                 ++attempt)
-            {
-                place.assign(start, start + n);
-                if (attempt > 0)
-                    grasping_->randomizeChain(place.data());
-                if (!grasping_->solveCarry(grasp, {target.position, held.yaw}, place.data()))
-                    continue;
-                retreat = place;
-                if (!grasping_->solveShortMove(Eigen::Vector3d::Zero(),
-                                               {0.0, 0.0, -grasping_->settings().approachDistance},
-                                               retreat.data()))
-                    continue;
-                ++found;
-                const double distance = grasping_->jointDistance(start, place.data());
-                if (distance < nearest)
+            Grasping::Solution joints;
+            const bool found = grasping_->nearestSolution(
+                start, 0, joints,
+                [&](Grasping::Solution &s)
                 {
-                    nearest = distance;
-                    placeJoints.swap(place);
-                    retreatJoints.swap(retreat);
-                }
-            }
-            if (found == 0)
+                    if (!grasping_->solveCarry(grasp, {target.position, held.yaw}, s[0].data()))
+                        return false;
+                    s.resize(2, s[0]);
+                    return grasping_->solveShortMove(Eigen::Vector3d::Zero(),
+                                                     {0.0, 0.0, -grasping_->settings().approachDistance},
+                                                     s[1].data());
+                });
+            if (!found)
                 return false;
+            placeJoints.swap(joints[0]);
+            retreatJoints.swap(joints[1]);
         }
         else
             placeJoints.assign(space_->robotValues(to), space_->robotValues(to) + n);
