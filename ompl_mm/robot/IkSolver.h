@@ -62,9 +62,10 @@ namespace ompl_mm
         unsigned int lastIterations() const { return lastIterations_; }
 
     protected:
-        /** InverseKinematics' hook: damped least squares from q's values, then from random values
-            (`restarts` times, within timeLimit); a solution is within tolerance. */
-        bool search(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng) override;
+        /** InverseKinematics' hook: damped least squares from q's values, then, for scope Anywhere,
+            from random values (`restarts` times, within timeLimit); a solution is within tolerance. */
+        bool search(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng,
+                    IkScope scope) override;
 
     private:
         using Vector6d = Eigen::Matrix<double, 6, 1>;
@@ -84,8 +85,6 @@ namespace ompl_mm
         // work space, sized once
         std::vector<double> work_;  ///< the whole robot's joint vector being solved
         Eigen::Matrix<double, 6, Eigen::Dynamic> jacobian_;
-        Eigen::MatrixXd inverse_;    ///< damped pseudo-inverse, size() x 6
-        Eigen::MatrixXd nullSpace_;  ///< size() x size()
         Eigen::VectorXd step_, posture_;
     };
 }  // namespace ompl_mm

@@ -21,6 +21,13 @@ namespace ompl_mm
         Position3D,     ///< position only
     };
 
+    /** Where inverse kinematics may look for a solution. */
+    enum class IkScope
+    {
+        Anywhere,  ///< from the seed, then from random joint values (the solver's restarts)
+        NearSeed,  ///< from the seed alone: for short moves, whose solution must stay close to it
+    };
+
     /** Inverse kinematics of one kinematic chain, as the manipulation primitives and MOPL's
         sampling ask for it: joint values that put the chain's tool frame at a target. IkSolver is
         the built-in implementation; derive from this class to plug in another solver
@@ -35,8 +42,10 @@ namespace ompl_mm
         /** Finds joint values that put the tool at target for task, starting from the chain's
             values in q (the whole robot's joint vector; other joints are left as they are).
             @returns true with q holding a solution within the joint limits and the solver's
-            tolerance; false with q unchanged. rng draws any random restarts. */
-        bool solve(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng);
+            tolerance; false with q unchanged. rng draws any random restarts; scope NearSeed asks for
+            none (a solution close to q or none). */
+        bool solve(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng,
+                   IkScope scope = IkScope::Anywhere);
 
         /** The chain solved for. */
         virtual const KinematicChain &chain() const = 0;
@@ -52,7 +61,8 @@ namespace ompl_mm
 
     protected:
         /** The solver's work for solve(), untimed; the same contract. */
-        virtual bool search(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng) = 0;
+        virtual bool search(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng,
+                            IkScope scope) = 0;
 
     private:
         double time_{0.0};

@@ -110,7 +110,8 @@ namespace ompl_mm
                                          ik_->chain().toolPose(q, model.scene().robot.basePose) *
                                          Eigen::Translation3d(local);
         std::copy_n(q, work_.size(), work_.begin());
-        if (!ik_->solve(target, IkTask::Pose6D, work_.data(), rng_))
+        // a restart far from q could not pass the short-move test below
+        if (!ik_->solve(target, IkTask::Pose6D, work_.data(), rng_, IkScope::NearSeed))
             return false;
         for (std::size_t j = 0; j < work_.size(); ++j)
             if (std::abs(work_[j] - q[j]) > MAX_SHORT_MOVE)

@@ -26,8 +26,6 @@ namespace ompl_mm
         work_.assign(variables, 0.0);
         const auto n = static_cast<Eigen::Index>(chain_.size());
         jacobian_.resize(6, n);
-        inverse_.resize(n, 6);
-        nullSpace_.resize(n, n);
         step_.resize(n);
         posture_.resize(n);
         params_.declareParam<double>(
@@ -89,10 +87,11 @@ namespace ompl_mm
             // less damping as the error shrinks: fast final convergence, steady far from the target
             const double lambda = damping * std::min(1.0, size);
             normal.diagonal().array() += lambda * lambda;
-            inverse_.noalias() = normal.ldlt().solve(jacobian_).transpose();
-            step_.noalias() = inverse_ * error;
-            // towards the middle of the joint ranges, in the (damped) null space of the task; close
-            // to the target it would keep the error above what the damping leaks into the task
+            // the damped step J^T (J J^T + lambda^2 I)^-1 e plus, far from the target, a step p
+            // towards the middle of the joint ranges projected into the task's (damped) null space:
+            // p + J^T (J J^T + lambda^2 I)^-1 (e - J p), one 6-vector solve; close to the target the
+            // posture step would keep the error above what the damping leaks into the task
+            Vector6d residual = error;
             if (size > POSTURE_ERROR)
             {
                 for (unsigned int i = 0; i < n; ++i)
@@ -100,10 +99,12 @@ namespace ompl_mm
                                       ? 0.0
                                       : postureGain * (0.5 * (chain_.lower(i) + chain_.upper(i)) -
                                                        work_[chain_.variable(i)]);
-                nullSpace_.noalias() = -inverse_ * jacobian_;
-                nullSpace_.diagonal().array() += 1.0;
-                step_.noalias() += nullSpace_ * posture_;
+                residual.noalias() -= jacobian_ * posture_;
+                step_ = posture_;
             }
+            else
+                step_.setZero();
+            step_.noalias() += jacobian_.transpose() * normal.ldlt().solve(residual);
             const double largest = step_.cwiseAbs().maxCoeff();
             if (largest > maxStep)
                 step_ *= maxStep / largest;
@@ -118,7 +119,8 @@ namespace ompl_mm
         return false;
     }
 
-    bool IkSolver::search(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng)
+    bool IkSolver::search(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng,
+                          IkScope scope)
     {
         const auto end = std::chrono::steady_clock::now() +
                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -127,7 +129,8 @@ namespace ompl_mm
         const unsigned int n = chain_.size();
         for (unsigned int i = 0; i < n; ++i)
             work_[chain_.variable(i)] = q[chain_.variable(i)];
-        for (unsigned int a = 0; a <= restarts; ++a)
+        const unsigned int attempts = scope == IkScope::Anywhere ? restarts + 1 : 1;
+        for (unsigned int a = 0; a < attempts; ++a)
         {
             if (a > 0)
                 for (unsigned int i = 0; i < n; ++i)

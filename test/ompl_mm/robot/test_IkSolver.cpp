@@ -1,7 +1,8 @@
 // Tests for IkSolver on the KUKA LWR-like arm: full 6-D IK of 2,000 random reachable poses from the
 // middle of the joint ranges (every answer within the limits and 1e-5 of its target, at least 99.9 %
 // solved, bounded by iterations), the 5-D task with the yaw free and the 3-D task, determinism, an
-// unreachable target leaving the joints as they were, and the declared parameters.
+// unreachable target leaving the joints as they were, solves from the seed alone (NearSeed), and the
+// declared parameters.
 #include "ompl_mm/robot/IkSolver.h"
 
 #include "common/InputErrors.h"
@@ -134,6 +135,25 @@ TEST_F(LwrIk, UnreachableTargetFailsAndLeavesTheJoints)
     EXPECT_FALSE(solver_.solve(far, IkTask::Position3D, q.data(), restarts));
     EXPECT_EQ(q, before);
     EXPECT_EQ(solver_.lastIterations(), 21u * solver_.iterations) << "every attempt ran out";
+}
+
+TEST_F(LwrIk, NearSeedSolvesFromTheSeedAloneWithoutRestarts)
+{
+    ompl::RNG rng(52);
+    solver_.restarts = 20;
+    const Eigen::Isometry3d far(Eigen::Translation3d(3.0, 0.0, 0.5));
+    std::vector<double> q = middle();
+    EXPECT_FALSE(solver_.solve(far, IkTask::Position3D, q.data(), rng, IkScope::NearSeed));
+    EXPECT_EQ(solver_.lastIterations(), solver_.iterations) << "one attempt, from the seed";
+    // a target near the seed is found from it, close to it
+    std::vector<double> seed = middle();
+    seed[chain().variable(1)] += 0.3;
+    const Eigen::Isometry3d near = chain().toolPose(seed.data(), base_);
+    seed[chain().variable(3)] += 0.05;  // start a little off the answer
+    std::vector<double> found = seed;
+    ASSERT_TRUE(solver_.solve(near, IkTask::Pose6D, found.data(), rng, IkScope::NearSeed));
+    EXPECT_LE(solver_.error(near, IkTask::Pose6D, found.data()), solver_.tolerance);
+    EXPECT_LE(solver_.lastIterations(), solver_.iterations);
 }
 
 TEST_F(LwrIk, ParametersAreDeclaredWithRanges)
