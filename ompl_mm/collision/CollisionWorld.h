@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ompl_mm/collision/ConvexShape.h"
 #include "ompl_mm/collision/MotionBounds.h"
 #include "ompl_mm/model/ManipulationModel.h"
 
@@ -71,14 +72,19 @@ namespace ompl_mm
         std::string contactAmong(const double *joints,
                                  const std::vector<std::optional<ObjectPose>> &objects) const;
 
-        /** Least distance between bodies that move relative to each other along a motion, metres;
-            about FCL's distance precision. */
+        /** Least distance between bodies that move relative to each other along a motion, metres. */
         static constexpr double MIN_CLEARANCE = 1e-5;
-        /** Error allowed for FCL's distances, metres. */
+        /** How far below the distance of two convex solids convexDistance() may stop, metres (its
+            results are lower bounds). */
         static constexpr double DISTANCE_ERROR = 0.25 * MIN_CLEARANCE;
         /** Clearance a motion keeps at the fraction it reports as safe (SweepCheck), metres: a
             planner that stops there can leave again without grazing. */
         static constexpr double SAFE_CLEARANCE = 1e-2;
+        /** How deep an object that rests on an obstacle at one end of a motion (is put down on it
+            or lifted off it) may sink into it along the way, metres: more than the rest tolerance
+            (SupportSurface::REST_TOLERANCE), so that a resting object is clear of the obstacle's
+            core. */
+        static constexpr double SUPPORT_SINK = 1e-3;
         /** Most distance rounds of one motion check; a motion that grazes a body so closely that it
             needs more is rejected. */
         static constexpr unsigned int MAX_SWEEP_ROUNDS = 4000;
@@ -92,10 +98,12 @@ namespace ompl_mm
 
         /** Continuous collision check of a motion from one configuration to another, under the
             contact rules of isCollisionFree (a contact allowed at both ends is allowed along the
-            motion): conservative advancement, each round measuring the distances of the body pairs
-            that may meet and advancing as far as their sweeps (MotionBounds) cannot close them. So a
-            motion it accepts is free at every point, and any part of it is accepted as well, to
-            within FCL's distance precision and MAX_SWEEP_ROUNDS. The joints must move linearly
+            motion; an object put down on an obstacle or lifted off it may touch it, but sinks no
+            deeper than SUPPORT_SINK into it on the way): conservative advancement, each round measuring the
+           distances of the body pairs that may meet and advancing as far as their sweeps (MotionBounds)
+           cannot close them. So a motion it accepts is free at every point, and any part of it is accepted as
+           well, to within the distances' precision (DISTANCE_ERROR for convex solids, measured by
+            convexDistance(); FCL's for triangle meshes) and MAX_SWEEP_ROUNDS. The joints must move linearly
             and each object slide or be carried with the tool (held at one end at least);
             configurationAt(t) returns the configuration at fraction t (its pointers stay valid
             until the next call). @pre both configurations' pointers are set, for all bodies. */
@@ -121,6 +129,11 @@ namespace ompl_mm
             std::string label;
             bool gripper{false};  ///< robot link at or below the tool link: may touch a held object
             double radius{0.0};   ///< bounding radius of the shape about its centre
+            std::optional<ConvexShape>
+                convex;  ///< the shape for convexDistance(), unless it is no convex solid
+            /** An obstacle's convex shape shrunk by SUPPORT_SINK: what an object that rests on it at
+                one end of a motion may not meet (unless it is no convex solid). */
+            std::optional<ConvexShape> supportCore;
         };
         /** Two bodies that may meet along a motion, and how fast their distance may shrink. */
         struct SweptPair
@@ -132,7 +145,11 @@ namespace ompl_mm
             double lastFraction{-1.0};  ///< where the pair's distance was last measured, or -1
             double lastDistance{0.0};   ///< that distance
             bool lastExact{false};      ///< of the shapes (true) or of their bounding boxes
+            bool againstCore{false};    ///< b is measured by its supportCore
         };
+        /** The distance of the bodies of a pair, placed (a lower bound, DISTANCE_ERROR below it at
+            most); zero or less when they touch. */
+        static double distance(const SweptPair &pair);
 
         /** Fills sweptPairs_ with the pairs a motion may bring together. */
         void findSweptPairs(const Configuration &from, const Configuration &to) const;

@@ -5,6 +5,7 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_mm/collision/ConvexDistance.h"
 #include "ompl_mm/scene/ConvexHull.h"
 
 #include <algorithm>
@@ -20,15 +21,6 @@ namespace ompl_mm
             const fcl::CollisionObjectd *allowed{nullptr};
             const fcl::CollisionObjectd *hit{nullptr};
         };
-
-        /** The distance of two placed bodies; zero or less when they touch. */
-        double distance(const fcl::CollisionObjectd &a, const fcl::CollisionObjectd &b)
-        {
-            fcl::DistanceRequestd request;
-            fcl::DistanceResultd result;
-            fcl::distance(&a, &b, request, result);
-            return result.min_distance;
-        }
 
         bool narrowPhase(const fcl::CollisionObjectd &a, const fcl::CollisionObjectd &b)
         {
@@ -134,7 +126,8 @@ namespace ompl_mm
                 }
                 robotBodies_.push_back(
                     {std::make_unique<fcl::CollisionObjectd>(geometry), s.origin, static_cast<int>(l), label,
-                     robot.isInSubtree(static_cast<int>(l), model_->toolLink()), s.shape.boundingRadius()});
+                     robot.isInSubtree(static_cast<int>(l), model_->toolLink()), s.shape.boundingRadius(),
+                     ConvexShape::of(s.shape, scene.robot.meshCollision), std::nullopt});
             }
 
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
@@ -144,7 +137,8 @@ namespace ompl_mm
             offset.translation().z() = 0.5 * shape.height();  // the object frame is at its base
             objectBodies_.push_back({std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(shape)),
                                      offset, static_cast<int>(i), "object '" + scene.objects[i].name + "'",
-                                     false, shape.boundingRadius()});
+                                     false, shape.boundingRadius(),
+                                     ConvexShape::of(shape, MeshCollision::Exact), std::nullopt});
         }
 
         obstacleTree_ = std::make_unique<fcl::DynamicAABBTreeCollisionManagerd>();
@@ -156,7 +150,11 @@ namespace ompl_mm
                 static_cast<int>(i),
                 "obstacle '" + scene.obstacles[i].name + "'",
                 false,
-                scene.obstacles[i].shape.boundingRadius()};
+                scene.obstacles[i].shape.boundingRadius(),
+                ConvexShape::of(scene.obstacles[i].shape, MeshCollision::Exact),
+                std::nullopt};
+            if (body.convex)
+                body.supportCore = body.convex->shrunk(SUPPORT_SINK);
             place(*body.object, scene.obstacles[i].pose);
             body.object->setUserData(&obstacleBodies_);  // non-null marks tree members
             obstacleTree_->registerObject(body.object.get());
@@ -248,6 +246,21 @@ namespace ompl_mm
     }
 
     CollisionWorld::~CollisionWorld() = default;
+
+    double CollisionWorld::distance(const SweptPair &pair)
+    {
+        const Body &a = *pair.a, &b = *pair.b;
+        const std::optional<ConvexShape> &shapeB = pair.againstCore ? b.supportCore : b.convex;
+        // convex solids by our GJK, whose lower bound is what conservative advancement needs; FCL
+        // for triangle meshes
+        if (a.convex && shapeB)
+            return convexDistance(*a.convex, a.object->getTransform(), *shapeB, b.object->getTransform(),
+                                  DISTANCE_ERROR);
+        fcl::DistanceRequestd request;
+        fcl::DistanceResultd result;
+        fcl::distance(a.object.get(), b.object.get(), request, result);
+        return result.min_distance;
+    }
 
     void CollisionWorld::placeBodies(const Configuration &configuration) const
     {
@@ -385,9 +398,23 @@ namespace ompl_mm
         for (std::size_t i = 0; i < objectBodies_.size(); ++i)
         {
             for (const Body &obstacle : obstacleBodies_)
-                if (!restsOn(from, static_cast<int>(i), obstacle.owner) &&
-                    !restsOn(to, static_cast<int>(i), obstacle.owner))
-                    add(objectBodies_[i], obstacle, objectSweeps[i], still);
+            {
+                // an object that rests on the obstacle at both ends slides on its (planar, convex)
+                // surface; one put down on it or lifted off it may touch it but not sink into it
+                const bool restsFrom = restsOn(from, static_cast<int>(i), obstacle.owner);
+                const bool restsTo = restsOn(to, static_cast<int>(i), obstacle.owner);
+                if (restsFrom && restsTo)
+                    continue;
+                const std::size_t before = pairs.size();
+                add(objectBodies_[i], obstacle, objectSweeps[i], still);
+                if ((restsFrom || restsTo) && pairs.size() > before)
+                {
+                    if (obstacle.supportCore)
+                        pairs.back().againstCore = true;
+                    else
+                        pairs.pop_back();  // no convex core to measure: its contacts are allowed
+                }
+            }
             for (std::size_t j = i + 1; j < objectSweeps.size(); ++j)
                 add(objectBodies_[i], objectBodies_[j], objectSweeps[i], objectSweeps[j]);
         }
@@ -420,7 +447,7 @@ namespace ompl_mm
                     continue;
                 }
                 const bool exact = apart <= 2.0 * SAFE_CLEARANCE;
-                const double d = exact ? distance(*pair.a->object, *pair.b->object) : apart;
+                const double d = exact ? distance(pair) : apart;
                 if (d < MIN_CLEARANCE)
                     return {false, safe};
                 clear = clear && d >= SAFE_CLEARANCE;

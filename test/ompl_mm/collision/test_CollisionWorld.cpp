@@ -1,6 +1,8 @@
 // Tests for CollisionWorld.
 #include "ompl_mm/collision/CollisionWorld.h"
 
+#include "ompl_mm/scene/SceneLoader.h"
+
 #include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
@@ -282,4 +284,70 @@ TEST_F(MobileSweep, APushKeepsTheRobotJustBehindTheObject)
     EXPECT_TRUE(sweep(behind, behind + V2(0.2, 0.0), 1).free);
     // without the object moving, the robot runs into it
     EXPECT_FALSE(sweep(behind, behind + V2(0.2, 0.0)).free);
+}
+
+namespace
+{
+    /** KUKA TABLE with the arm at its zero pose and cyl1 carried straight from one point to
+        another, held at the start and resting where it ends. */
+    class PutDown : public ::testing::Test
+    {
+    protected:
+        PutDown() : scene_(loadScene(OMPL_MM_SCENES_DIR "/kuka_table.xml")), world_(makeModel(scene_))
+        {
+            for (const MovableObject &object : scene_.objects)
+                poses_.push_back(object.start);
+        }
+
+        CollisionWorld::SweepCheck putDown(const Eigen::Vector3d &from, const Eigen::Vector3d &to)
+        {
+            std::vector<ObjectPose> posesFrom = poses_, posesTo = poses_, along = poses_;
+            posesFrom[0].position = from;
+            posesTo[0].position = to;
+            std::vector<int> restingFrom(poses_.size()), restingTo(poses_.size()), restingAlong;
+            for (std::size_t i = 0; i < poses_.size(); ++i)
+            {
+                restingFrom[i] = scene_.restingSurface(posesFrom[i].position);
+                restingTo[i] = scene_.restingSurface(posesTo[i].position);
+            }
+            const std::vector<double> zero(7, 0.0);
+            return world_.checkSweep(
+                {zero.data(), &posesFrom, &restingFrom}, {zero.data(), &posesTo, &restingTo},
+                [&](double t)
+                {
+                    along[0].position = from + t * (to - from);
+                    restingAlong = restingFrom;
+                    restingAlong[0] = scene_.restingSurface(along[0].position);
+                    return CollisionWorld::Configuration{zero.data(), &along, &restingAlong};
+                });
+        }
+
+        Scene scene_;
+        CollisionWorld world_;
+        std::vector<ObjectPose> poses_;
+    };
+}  // namespace
+
+TEST_F(PutDown, AnObjectPutOnATableFromAboveIsFree)
+{
+    // table1's top spans z 0.38 to 0.43 around (0.5, 0)
+    const Eigen::Vector3d onTop(0.5, 0.0, 0.43);
+    ASSERT_GE(scene_.restingSurface(onTop), 0);
+    EXPECT_TRUE(putDown(onTop + Eigen::Vector3d(0.0, 0.0, 0.1), onTop).free);
+    // and lifted off it
+    EXPECT_TRUE(putDown(onTop, onTop + Eigen::Vector3d(0.0, 0.0, 0.1)).free);
+}
+
+TEST_F(PutDown, AnObjectPutOnATableThroughItsTopCollides)
+{
+    // from under the top (clear of the legs) up through it: it may touch the table where it
+    // rests, but not pass through it on the way
+    const Eigen::Vector3d onTop(0.5, 0.0, 0.43), under(0.5, 0.0, 0.2);
+    std::string contact;
+    ASSERT_TRUE(world_
+                    .contactAmong(std::vector<double>(7, 0.0).data(),
+                                  {ObjectPose{under, 0.0}, std::nullopt, std::nullopt})
+                    .empty());
+    EXPECT_FALSE(putDown(under, onTop).free);
+    EXPECT_FALSE(putDown(onTop, under).free);
 }

@@ -1,0 +1,115 @@
+#include "ompl_mm/collision/ConvexShape.h"
+
+#include "ompl_mm/scene/ConvexHull.h"
+#include "ompl_mm/scene/TriangleMesh.h"
+
+#include <cmath>
+
+namespace ompl_mm
+{
+    ConvexShape ConvexShape::box(const Eigen::Vector3d &size)
+    {
+        ConvexShape shape(Kind::Box);
+        shape.halfSize_ = 0.5 * size;
+        return shape;
+    }
+
+    ConvexShape ConvexShape::cylinder(double radius, double length)
+    {
+        ConvexShape shape(Kind::Cylinder);
+        shape.halfSize_ = {radius, radius, 0.5 * length};
+        return shape;
+    }
+
+    ConvexShape ConvexShape::sphere(double radius)
+    {
+        ConvexShape shape(Kind::Point);
+        shape.margin_ = radius;
+        return shape;
+    }
+
+    ConvexShape ConvexShape::polytope(std::shared_ptr<const std::vector<Eigen::Vector3d>> corners)
+    {
+        ConvexShape shape(Kind::Polytope);
+        shape.corners_ = std::move(corners);
+        return shape;
+    }
+
+    std::optional<ConvexShape> ConvexShape::of(const Shape &shape, MeshCollision meshes)
+    {
+        switch (shape.kind)
+        {
+            case Shape::Kind::Box:
+                return box(shape.boxSize);
+            case Shape::Kind::Cylinder:
+                return cylinder(shape.radius, shape.length);
+            case Shape::Kind::Sphere:
+                return sphere(shape.radius);
+            case Shape::Kind::Mesh:
+                if (meshes == MeshCollision::ConvexHull)
+                {
+                    // the corners stay with the mesh's hull, shared
+                    const std::shared_ptr<const ConvexHull> hull = shape.mesh->convexHull();
+                    return polytope({hull, &hull->vertices});
+                }
+                return std::nullopt;
+        }
+        return std::nullopt;
+    }
+
+    std::optional<ConvexShape> ConvexShape::shrunk(double by) const
+    {
+        ConvexShape shape = *this;
+        switch (kind_)
+        {
+            case Kind::Point:
+                shape.margin_ -= by;
+                return shape.margin_ > 0.0 ? std::optional(shape) : std::nullopt;
+            case Kind::Box:
+            case Kind::Cylinder:
+                shape.halfSize_.array() -= by;
+                return shape.halfSize_.minCoeff() > 0.0 ? std::optional(shape) : std::nullopt;
+            case Kind::Polytope:
+                return std::nullopt;
+        }
+        return std::nullopt;
+    }
+
+    Eigen::Vector3d ConvexShape::support(const Eigen::Vector3d &direction) const
+    {
+        switch (kind_)
+        {
+            case Kind::Point:
+                return Eigen::Vector3d::Zero();
+            case Kind::Box:
+                return {std::copysign(halfSize_.x(), direction.x()),
+                        std::copysign(halfSize_.y(), direction.y()),
+                        std::copysign(halfSize_.z(), direction.z())};
+            case Kind::Cylinder:
+            {
+                // the rim point towards the direction's horizontal part, on the cap it points to
+                const double horizontal = std::hypot(direction.x(), direction.y());
+                const double scale = horizontal > 0.0 ? halfSize_.x() / horizontal : 0.0;
+                return {scale * direction.x(), scale * direction.y(),
+                        std::copysign(halfSize_.z(), direction.z())};
+            }
+            case Kind::Polytope:
+            {
+                const std::vector<Eigen::Vector3d> &corners = *corners_;
+                std::size_t best = 0;
+                double farthest = corners[0].dot(direction);
+                for (std::size_t i = 1; i < corners.size(); ++i)
+                {
+                    const double along = corners[i].dot(direction);
+                    if (along > farthest)
+                    {
+                        farthest = along;
+                        best = i;
+                    }
+                }
+                return corners[best];
+            }
+        }
+        return Eigen::Vector3d::Zero();
+    }
+}  // namespace ompl_mm
