@@ -4,8 +4,12 @@
 // query (failures included) for our IkSolver and, on the same poses, Orocos KDL's ChainIkSolverPos_NR_JL
 // and ChainIkSolverPos_LMA (KDL chains built from the same RobotModel).
 //
-// Usage: bench_ik [URDF] [--queries N] [--tip LINK] [--seed S]   (default: scenes/robots/kuka_lwr.urdf,
-// 10000 queries, tip "tool", seed 1)
+// Usage: bench_ik [URDF] [--queries N] [--tip LINK] [--seed S] [--iterations N] [--damping D]
+// [--posture G]   (default: scenes/robots/kuka_lwr.urdf, 10000 queries, tip "tool", seed 1, the
+// solver's own iterations, damping and posture gain). Exit status: 0 done, 2 bad input.
+#include "ompl_core/io/InputError.h"
+#include "ompl_core/run/CommandLine.h"
+#include "ompl_core/run/ExitStatus.h"
 #include "ompl_mm/robot/IkSolver.h"
 #include "ompl_mm/robot/RobotModel.h"
 
@@ -17,12 +21,19 @@
 
 #include <ompl/util/RandomNumbers.h>
 
+#include <boost/program_options.hpp>
+
 #include <chrono>
+#include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <functional>
+#include <iostream>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
+
+namespace po = boost::program_options;
 
 namespace
 {
@@ -84,100 +95,170 @@ namespace
                     100.0 * result.solved / static_cast<double>(queries),
                     1000.0 * result.seconds / static_cast<double>(queries));
     }
+
+    struct Options
+    {
+        std::string urdf{std::string(OMPL_MM_SCENES_DIR) + "/robots/kuka_lwr.urdf"};
+        std::string tip{"tool"};
+        long long queries{10000};  // signed, so that a negative count is caught rather than wrapped
+        long long seed{1};
+        long long iterations{0};                 ///< 0: the solver's default
+        std::optional<double> damping, posture;  ///< unset: the solver's defaults
+    };
+
+    /** @throws ompl_core::InputError with message unless ok. */
+    void require(bool ok, const std::string &message)
+    {
+        if (!ok)
+            throw ompl_core::InputError(message);
+    }
+
+    /** The value of option name when given, checked to be finite and not negative. */
+    std::optional<double> nonNegative(const po::variables_map &vm, const char *name)
+    {
+        if (!vm.count(name))
+            return std::nullopt;
+        const double value = vm[name].as<double>();
+        std::ostringstream text;
+        text << value;
+        require(std::isfinite(value) && value >= 0.0,
+                std::string("--") + name + " must be a finite number of at least 0, got " + text.str());
+        return value;
+    }
+
+    /** Reads the command line into options; false when the program should exit with exitCode
+        instead (after --help).
+        @throws boost::program_options::error for a malformed command line, ompl_core::InputError for
+        a value out of range. */
+    bool parseOptions(int argc, char **argv, Options &options, int &exitCode)
+    {
+        po::options_description named("Options");
+        named.add_options()("help,h", "print this help and exit")(
+            "queries", po::value(&options.queries)->default_value(options.queries)->value_name("N"),
+            "random reachable poses to solve (at least 1)")(
+            "tip", po::value(&options.tip)->default_value(options.tip)->value_name("LINK"),
+            "the link whose pose is solved for")(
+            "seed", po::value(&options.seed)->default_value(options.seed)->value_name("S"),
+            "random seed of the poses, in [1, 4294967295]")(
+            "iterations", po::value(&options.iterations)->value_name("N"),
+            "iterations of one IkSolver attempt (0 or unset: the solver's default)")(
+            "damping", po::value<double>()->value_name("D"),
+            "IkSolver's damping, at least 0 (unset: the solver's default)")(
+            "posture", po::value<double>()->value_name("G"),
+            "IkSolver's gain towards mid-range joints, at least 0 (unset: the solver's default)");
+        const po::variables_map vm = ompl_core::parseCommandLine(argc, argv, named, "urdf", options.urdf);
+        if (vm.count("help"))
+        {
+            std::cout << "Usage: bench_ik [URDF] [options]\n"
+                         "Full 6-D inverse kinematics of random reachable poses of a URDF robot's tip link "
+                         "(default URDF:\n"
+                         "scenes/robots/kuka_lwr.urdf) with ompl_mm's IkSolver and Orocos KDL's NR_JL and "
+                         "LMA solvers.\n"
+                         "Exit status: 0 done, 2 bad input.\n\n"
+                      << named;
+            exitCode = 0;
+            return false;
+        }
+        require(options.queries >= 1, "--queries must be at least 1, got " + std::to_string(options.queries));
+        require(options.seed >= 1 && options.seed <= 4294967295LL,
+                "--seed must be in [1, 4294967295], got " + std::to_string(options.seed));
+        require(options.iterations >= 0 && options.iterations <= 4294967295LL,
+                "--iterations must be in [0, 4294967295], got " + std::to_string(options.iterations));
+        options.damping = nonNegative(vm, "damping");
+        options.posture = nonNegative(vm, "posture");
+        return true;
+    }
+
+    int run(const Options &options)
+    {
+        const std::string &urdf = options.urdf, &tip = options.tip;
+        const auto queries = static_cast<std::size_t>(options.queries);
+        const auto seed = static_cast<std::uint_fast32_t>(options.seed);
+        const ompl_mm::RobotModel robot = ompl_mm::RobotModel::fromUrdfFile(urdf);
+        const ompl_mm::KinematicChain chain(robot, robot.linkIndex(tip));
+        const Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
+        const unsigned int n = chain.size();
+        require(n > 0, "no moving joint between the root of robot '" + robot.name() + "' and link '" + tip +
+                           "': nothing to solve");  // kdlChain needs a joint
+
+        ompl::RNG rng(seed);
+        std::vector<double> middle(robot.dof(), 0.0);
+        for (unsigned int i = 0; i < n; ++i)
+            middle[chain.variable(i)] = 0.5 * (chain.lower(i) + chain.upper(i));
+        std::vector<Eigen::Isometry3d> targets;
+        for (std::size_t k = 0; k < queries; ++k)
+        {
+            std::vector<double> q = middle;
+            for (unsigned int i = 0; i < n; ++i)
+                q[chain.variable(i)] = rng.uniformReal(chain.lower(i), chain.upper(i));
+            targets.push_back(chain.toolPose(q.data(), base));
+        }
+        std::printf(
+            "%s, tip %s: %u joints, %zu random reachable poses, full 6-D pose to %g, %g ms per query\n\n",
+            urdf.c_str(), tip.c_str(), n, queries, TOLERANCE, 1000 * TIME_LIMIT);
+        std::printf("| solver                           | solved     | mean time   |\n|---|---|---|\n");
+
+        ompl_mm::IkSolver ours(chain, base);
+        ours.tolerance = TOLERANCE;
+        ours.timeLimit = TIME_LIMIT;
+        if (options.iterations > 0)
+            ours.iterations = static_cast<unsigned int>(options.iterations);
+        if (options.damping)
+            ours.damping = *options.damping;
+        if (options.posture)
+            ours.postureGain = *options.posture;
+        ompl::RNG restarts(seed +
+                           1000003);  // not the poses' sequence: a restart must not draw a target's joints
+        print("ompl_mm IkSolver",
+              measure(targets,
+                      [&](const Eigen::Isometry3d &target)
+                      {
+                          std::vector<double> q = middle;
+                          return ours.solve(target, ompl_mm::IkTask::Pose6D, q.data(), restarts);
+                      }),
+              queries);
+
+        const KDL::Chain kdl = kdlChain(chain);
+        KDL::JntArray lower(n), upper(n), seedValues(n), solution(n);
+        for (unsigned int i = 0; i < n; ++i)
+        {
+            lower(i) = chain.lower(i);
+            upper(i) = chain.upper(i);
+            seedValues(i) = middle[chain.variable(i)];
+        }
+        KDL::ChainFkSolverPos_recursive fk(kdl);
+        KDL::ChainIkSolverVel_pinv velocity(kdl);
+        KDL::ChainIkSolverPos_NR_JL newton(kdl, lower, upper, fk, velocity, 100, TOLERANCE);
+        print("KDL ChainIkSolverPos_NR_JL",
+              measure(targets, [&](const Eigen::Isometry3d &target)
+                      { return newton.CartToJnt(seedValues, kdlFrame(target), solution) >= 0; }),
+              queries);
+        KDL::ChainIkSolverPos_LMA lma(kdl, TOLERANCE);
+        print(
+            "KDL ChainIkSolverPos_LMA",
+            measure(targets,
+                    [&](const Eigen::Isometry3d &target)
+                    {
+                        if (lma.CartToJnt(seedValues, kdlFrame(target), solution) < 0)
+                            return false;
+                        for (unsigned int i = 0; i < n; ++i)
+                            if (solution(i) < lower(i) || solution(i) > upper(i))
+                                return false;  // LMA knows no limits: a solution outside them is no solution
+                        return true;
+                    }),
+            queries);
+        return 0;
+    }
 }  // namespace
 
 int main(int argc, char **argv)
 {
-    std::string urdf = std::string(OMPL_MM_SCENES_DIR) + "/robots/kuka_lwr.urdf";
-    std::string tip = "tool";
-    std::size_t queries = 10000;
-    std::uint_fast32_t seed = 1;
-    unsigned int iterations = 0;  // 0: the solver's default
-    double damping = -1.0, posture = -1.0;
-    for (int i = 1; i < argc; ++i)
-    {
-        if (!std::strcmp(argv[i], "--queries") && i + 1 < argc)
-            queries = std::stoul(argv[++i]);
-        else if (!std::strcmp(argv[i], "--tip") && i + 1 < argc)
-            tip = argv[++i];
-        else if (!std::strcmp(argv[i], "--seed") && i + 1 < argc)
-            seed = std::stoul(argv[++i]);
-        else if (!std::strcmp(argv[i], "--iterations") && i + 1 < argc)
-            iterations = std::stoul(argv[++i]);
-        else if (!std::strcmp(argv[i], "--damping") && i + 1 < argc)
-            damping = std::stod(argv[++i]);
-        else if (!std::strcmp(argv[i], "--posture") && i + 1 < argc)
-            posture = std::stod(argv[++i]);
-        else
-            urdf = argv[i];
-    }
-    const ompl_mm::RobotModel robot = ompl_mm::RobotModel::fromUrdfFile(urdf);
-    const ompl_mm::KinematicChain chain(robot, robot.linkIndex(tip));
-    const Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
-    const unsigned int n = chain.size();
-
-    ompl::RNG rng(seed);
-    std::vector<double> middle(robot.dof(), 0.0);
-    for (unsigned int i = 0; i < n; ++i)
-        middle[chain.variable(i)] = 0.5 * (chain.lower(i) + chain.upper(i));
-    std::vector<Eigen::Isometry3d> targets;
-    for (std::size_t k = 0; k < queries; ++k)
-    {
-        std::vector<double> q = middle;
-        for (unsigned int i = 0; i < n; ++i)
-            q[chain.variable(i)] = rng.uniformReal(chain.lower(i), chain.upper(i));
-        targets.push_back(chain.toolPose(q.data(), base));
-    }
-    std::printf("%s, tip %s: %u joints, %zu random reachable poses, full 6-D pose to %g, %g ms per query\n\n",
-                urdf.c_str(), tip.c_str(), n, queries, TOLERANCE, 1000 * TIME_LIMIT);
-    std::printf("| solver                           | solved     | mean time   |\n|---|---|---|\n");
-
-    ompl_mm::IkSolver ours(chain, base);
-    ours.tolerance = TOLERANCE;
-    ours.timeLimit = TIME_LIMIT;
-    if (iterations > 0)
-        ours.iterations = iterations;
-    if (damping >= 0.0)
-        ours.damping = damping;
-    if (posture >= 0.0)
-        ours.postureGain = posture;
-    ompl::RNG restarts(seed + 1000003);  // not the poses' sequence: a restart must not draw a target's joints
-    print("ompl_mm IkSolver",
-          measure(targets,
-                  [&](const Eigen::Isometry3d &target)
-                  {
-                      std::vector<double> q = middle;
-                      return ours.solve(target, ompl_mm::IkTask::Pose6D, q.data(), restarts);
-                  }),
-          queries);
-
-    const KDL::Chain kdl = kdlChain(chain);
-    KDL::JntArray lower(n), upper(n), seedValues(n), solution(n);
-    for (unsigned int i = 0; i < n; ++i)
-    {
-        lower(i) = chain.lower(i);
-        upper(i) = chain.upper(i);
-        seedValues(i) = middle[chain.variable(i)];
-    }
-    KDL::ChainFkSolverPos_recursive fk(kdl);
-    KDL::ChainIkSolverVel_pinv velocity(kdl);
-    KDL::ChainIkSolverPos_NR_JL newton(kdl, lower, upper, fk, velocity, 100, TOLERANCE);
-    print("KDL ChainIkSolverPos_NR_JL",
-          measure(targets, [&](const Eigen::Isometry3d &target)
-                  { return newton.CartToJnt(seedValues, kdlFrame(target), solution) >= 0; }),
-          queries);
-    KDL::ChainIkSolverPos_LMA lma(kdl, TOLERANCE);
-    print("KDL ChainIkSolverPos_LMA",
-          measure(targets,
-                  [&](const Eigen::Isometry3d &target)
-                  {
-                      if (lma.CartToJnt(seedValues, kdlFrame(target), solution) < 0)
-                          return false;
-                      for (unsigned int i = 0; i < n; ++i)
-                          if (solution(i) < lower(i) || solution(i) > upper(i))
-                              return false;  // LMA knows no limits: a solution outside them is no solution
-                      return true;
-                  }),
-          queries);
-    return 0;
+    return ompl_core::exitStatusOf<po::error>(
+        "bench_ik",
+        [&]
+        {
+            Options options;
+            int exitCode = 0;
+            return parseOptions(argc, argv, options, exitCode) ? run(options) : exitCode;
+        });
 }

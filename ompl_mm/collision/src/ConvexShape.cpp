@@ -88,7 +88,9 @@ namespace ompl_mm
             case Kind::Cylinder:
             {
                 // the rim point towards the direction's horizontal part, on the cap it points to
-                const double horizontal = std::hypot(direction.x(), direction.y());
+                // sqrt rather than hypot: no overflow to guard against here, and hypot is slow
+                const double horizontal =
+                    std::sqrt(direction.x() * direction.x() + direction.y() * direction.y());
                 const double scale = horizontal > 0.0 ? halfSize_.x() / horizontal : 0.0;
                 return {scale * direction.x(), scale * direction.y(),
                         std::copysign(halfSize_.z(), direction.z())};
