@@ -18,15 +18,16 @@ namespace ompl_mm
            where they meet it) or, when that fails, the return push ends early (where it found the
            object, or at one of its waypoints short of the start) and the object stays there for
            the rest of the way, if the goal still holds;
-        2. runs the steps of OMPL's PathSimplifier (shortcuts, B-spline smoothing, vertex
-           reduction), seeded from the caller's RNG, on a copy kept when all of it is valid and
-           shorter; with the motion validator they shorten push runs as well as transit runs but
-           never make an object move on its own;
-        3. replans random windows of the path, from the start of one primitive run to the end of
+        2. replans random windows of the path, from the start of one primitive run to the end of
            a later one, with the empty-space planner (the primitives chained straight from the
            window's first to its last state: one push instead of several of the same object, no
            detour between them, …) and keeps a window when every motion of it is valid and the
-           tool travels less.
+           tool travels less; on the planner's raw path, where such a chain is more often the
+           shorter, and before OMPL's steps, which then straighten the chains too;
+        3. runs the steps of OMPL's PathSimplifier (shortcuts, B-spline smoothing, vertex
+           reduction), seeded from the caller's RNG, on a copy kept when all of it is valid and
+           shorter; with the motion validator they shorten push runs as well as transit runs but
+           never make an object move on its own.
         Every change is checked with the ManipulationMotionValidator, so the result is as valid as
         the input. Deterministic for a given RNG state. Not thread-safe (it reuses its empty-space
         planner's scratch space). */

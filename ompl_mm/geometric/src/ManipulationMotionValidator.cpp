@@ -67,8 +67,23 @@ namespace ompl_mm
     bool ManipulationMotionValidator::checkMotion(const ompl::base::State *s1,
                                                   const ompl::base::State *s2) const
     {
-        std::pair<ompl::base::State *, double> noState{nullptr, 0.0};
-        return checkMotion(s1, s2, noState);
+        if (!explain(s1, s2))
+        {
+            ++invalid_;
+            return false;
+        }
+        for (unsigned int k = 1; k <= PROBES; ++k)
+        {
+            space_->interpolate(s1, s2, static_cast<double>(k) / (PROBES + 1), along_);
+            if (!si_->isValid(along_))
+            {
+                ++invalid_;
+                return false;
+            }
+        }
+        const bool free = checkSweep(s1, s2).free && si_->isValid(s2);
+        ++(free ? valid_ : invalid_);
+        return free;
     }
 
     bool ManipulationMotionValidator::checkMotion(const ompl::base::State *s1, const ompl::base::State *s2,

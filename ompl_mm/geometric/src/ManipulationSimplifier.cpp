@@ -92,8 +92,6 @@ namespace ompl_mm
         path.removeRepeatedStates();
         while (!ptc && removeRoundTrip(path, goal, rng))
             ++outcome.roundTripsRemoved;
-        if (!ptc)
-            shortenWithOMPL(path, rng);
         // windows from one primitive run's start to a later run's end: what OMPL's shortcuts cannot
         // do, since they keep every manipulation, is to chain primitives anew across runs
         for (unsigned int attempt = 0; attempt < windowAttempts && !ptc; ++attempt)
@@ -107,6 +105,8 @@ namespace ompl_mm
             if (replanWindow(path, bounds[first], bounds[last], rng))
                 ++outcome.windowsReplanned;
         }
+        if (!ptc)
+            shortenWithOMPL(path, rng);
         path.removeRepeatedStates();
         return outcome;
     }

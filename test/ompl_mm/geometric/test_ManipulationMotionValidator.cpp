@@ -107,6 +107,28 @@ TEST_F(MotionValidation, CollisionsAlongAnExplainedMotionAreFound)
     EXPECT_TRUE(si_->isValid(lastValid.first));
 }
 
+TEST_F(MotionValidation, ProbingRejectsOnlyWhatTheSweepRejects)
+{
+    // random transits and pushes over the room: the quick answer (probes, then the sweep) and the
+    // one with a last valid state (the sweep alone) agree
+    ompl::RNG rng(11);
+    unsigned int valid = 0, invalid = 0;
+    for (int k = 0; k < 300; ++k)
+    {
+        ob::State *a = startCopy(), *b = startCopy();
+        setRobot(space_, a, rng.uniformReal(-2.3, 2.3), rng.uniformReal(-2.3, 2.3));
+        setRobot(space_, b, rng.uniformReal(-2.3, 2.3), rng.uniformReal(-2.3, 2.3));
+        if (!si_->isValid(a))
+            continue;
+        std::pair<ob::State *, double> lastValid{newState(), -1.0};
+        const bool quick = si_->checkMotion(a, b);
+        EXPECT_EQ(quick, si_->checkMotion(a, b, lastValid)) << "motion " << k;
+        ++(quick ? valid : invalid);
+    }
+    EXPECT_GT(valid, 20u);
+    EXPECT_GT(invalid, 20u);
+}
+
 TEST_F(MotionValidation, AnUnexplainedMotionHasItsStartAsLastValidState)
 {
     ob::State *slid = startCopy();
