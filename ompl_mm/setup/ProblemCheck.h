@@ -29,8 +29,9 @@ namespace ompl_mm
         [[noreturn]] void rejectStart(const ompl::base::State *start, const std::string &reason) const;
 
         /** Times the empty-space planner tries to move an object to its goal before the goal
-            counts as impossible. */
-        static constexpr unsigned int REACH_ATTEMPTS = 10;
+            counts as impossible: its inverse kinematics is random, and a tight placement may need
+            several tries; a reachable goal takes a few, an impossible one all (milliseconds each). */
+        static constexpr unsigned int REACH_ATTEMPTS = 100;
 
         /** Throws at the goal's line when the goal is impossible in one of the ways above. */
         void checkGoal(const ompl::base::State *start, const std::vector<PrimitivePtr> &primitives) const;
