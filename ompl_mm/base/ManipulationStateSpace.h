@@ -86,14 +86,17 @@ namespace ompl_mm
         /** OMPL's hook: prints the joints and each object's name, position and yaw on one line. */
         void printState(const ompl::base::State *state, std::ostream &out) const override;
 
-    private:
-        /** True when the object moves between from and to and is held at either end. */
-        bool isCarried(const ompl::base::State *from, const ompl::base::State *to, unsigned int object) const;
-        /** Pose at time t of an object carried from one pose to another while the tool moves; the
-            yaw of an object that turnsFreely (Shape::turnsFreely) interpolates on its own. */
+        /** Pose at time t of an object carried from one pose to another while the tool moves from
+            toolFrom to toolTo (at toolAt now): its grasp moves linearly between the two ends'
+            grasps; the yaw of an object that turnsFreely (Shape::turnsFreely) interpolates on its
+            own. */
         static ObjectPose carriedPose(const ObjectPose &from, const ObjectPose &to,
                                       const Eigen::Isometry3d &toolFrom, const Eigen::Isometry3d &toolTo,
                                       const Eigen::Isometry3d &toolAt, double t, bool turnsFreely);
+
+    private:
+        /** True when the object moves between from and to and is held at either end. */
+        bool isCarried(const ompl::base::State *from, const ompl::base::State *to, unsigned int object) const;
 
         ManipulationModelPtr model_;
     };

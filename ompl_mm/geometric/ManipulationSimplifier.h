@@ -2,6 +2,7 @@
 
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 #include "ompl_mm/geometric/ManipulationPath.h"
+#include "ompl_mm/geometric/ToolPathStraightener.h"
 #include "ompl_mm/geometric/TransitConnector.h"
 #include "ompl_mm/primitives/EmptySpacePlanner.h"
 
@@ -27,7 +28,9 @@ namespace ompl_mm
         3. runs the steps of OMPL's PathSimplifier (shortcuts, B-spline smoothing, vertex
            reduction), seeded from the caller's RNG, on a copy kept when all of it is valid and
            shorter; with the motion validator they shorten push runs as well as transit runs but
-           never make an object move on its own.
+           never make an object move on its own;
+        4. brings an arm's tool closer to straight lines along its transits and transfers
+           (ToolPathStraightener), or, where the tool moves straight already, runs step 3 again.
         Every change is checked with the ManipulationMotionValidator, so the result is as valid as
         the input. Deterministic for a given RNG state. Not thread-safe (it reuses its empty-space
         planner's scratch space). */
@@ -54,6 +57,10 @@ namespace ompl_mm
                          const ompl::base::PlannerTerminationCondition &ptc =
                              ompl::base::plannerNonTerminatingCondition()) const;
 
+        /** Seconds the simplifier's own inverse kinematics took (ToolPathStraightener; the
+            windows' primitives time theirs). */
+        double inverseKinematicsTime() const { return straightener_.ikTime(); }
+
         /** Number of round trips in path: push runs (consecutive segments pushing one object)
             after which the object stands where it stood before the same or an earlier push run
             of it. */
@@ -69,7 +76,8 @@ namespace ompl_mm
         bool holdObject(ManipulationPath &path, unsigned int object, const ObjectPose &pose,
                         std::size_t first, std::size_t last, const ompl::base::Goal *goal,
                         ompl::RNG &rng) const;
-        /** Shortens path with the steps of OMPL's PathSimplifier (see the class comment). */
+        /** Shortens path with one round of the steps of OMPL's PathSimplifier (see the class
+            comment). */
         void shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng) const;
         /** Replans states first … last with the empty-space planner; true when the path changed. */
         bool replanWindow(ManipulationPath &path, std::size_t first, std::size_t last, ompl::RNG &rng) const;
@@ -81,5 +89,6 @@ namespace ompl_mm
         std::shared_ptr<const ManipulationMotionValidator> validator_;
         mutable EmptySpacePlanner planner_;
         TransitConnector connector_;
+        mutable ToolPathStraightener straightener_;
     };
 }  // namespace ompl_mm

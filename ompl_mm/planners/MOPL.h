@@ -158,11 +158,11 @@ namespace ompl_mm
         /** True when more than one object rests on no surface in state (no robot holds two). */
         bool holdsTwo(const ompl::base::State *state) const;
         /** Total inverse kinematics time of the primitives, seconds. */
-        double primitivesIkTime() const;
+        double ikTimeSoFar() const;
 
         std::vector<PrimitivePtr> primitives_;
         const Pickup *pickup_{nullptr};  ///< grasps the objects of samples in the air; null: no such samples
-        double ikTimeAtClear_{0.0};      ///< primitivesIkTime() when the statistics were last reset
+        double ikTimeAtClear_{0.0};      ///< ikTimeSoFar() when the statistics were last reset
         const ManipulationStateSpace *space_{nullptr};
         std::unique_ptr<ManipulationMetric> metric_;
         std::unique_ptr<EmptySpacePlanner> esp_;

@@ -10,10 +10,10 @@ namespace ompl_mm
     namespace
     {
         constexpr double SAME_POSE = 1e-6;
+        // calls of OMPL's shortcutPath in a round, each trying as many shortcuts as the path has states
+        constexpr unsigned int SHORTCUT_PASSES = 5;
         // RRT iterations to route the robot around an object it no longer pushes
         constexpr unsigned int CONNECT_ITERATIONS = 500;
-        // rounds of OMPL's shortcut, smoothing and vertex reduction steps
-        constexpr unsigned int OMPL_ROUNDS = 2;
 
         /** The runs of consecutive segments that push `object`: first and last state of each. */
         std::vector<std::pair<std::size_t, std::size_t>> pushRuns(const ManipulationPath &path,
@@ -76,7 +76,8 @@ namespace ompl_mm
           space_(si->getStateSpace()->as<ManipulationStateSpace>()),
           validator_(std::dynamic_pointer_cast<const ManipulationMotionValidator>(si->getMotionValidator())),
           planner_(space_, validator_ ? validator_->primitives() : std::vector<PrimitivePtr>()),
-          connector_(si)
+          connector_(si),
+          straightener_(si)
     {
         if (!validator_)
             throw ompl::Exception(
@@ -106,6 +107,12 @@ namespace ompl_mm
                 ++outcome.windowsReplanned;
         }
         if (!ptc)
+            shortenWithOMPL(path, rng);
+        // a second round of OMPL's steps only where the tool moves straight already (mobile
+        // bases: 100 seeds of MOBILE BLOCKED 15.71 -> 15.29 m): on an arm its B-spline leaves many
+        // short joint-space arcs that the straightener no longer takes on (KUKA TABLE, 100 seeds:
+        // 7.89 m with it before the straightener, 7.61 m without)
+        if (!ptc && straightener_.straighten(path, ptc) == 0 && !ptc)
             shortenWithOMPL(path, rng);
         path.removeRepeatedStates();
         return outcome;
@@ -222,17 +229,13 @@ namespace ompl_mm
         // place (objects and all); a copy, kept only when all of it checks at the resolution
         ManipulationPath shorter(path);
         SeededPathSimplifier simplifier(si_, rng.uniformInt(1, std::numeric_limits<int>::max()));
-        for (unsigned int round = 0; round < OMPL_ROUNDS; ++round)
-        {
-            bool changed = false;
-            for (unsigned int k = 0; k < 5 && simplifier.shortcutPath(shorter); ++k)
-                changed = true;
-            simplifier.smoothBSpline(shorter, 3, shorter.length() / 100.0);
-            changed = simplifier.reduceVertices(shorter) || changed;
-            changed = simplifier.collapseCloseVertices(shorter) || changed;
-            if (!changed)
+        // shortcuts while they find some
+        for (unsigned int k = 0; k < SHORTCUT_PASSES; ++k)
+            if (!simplifier.shortcutPath(shorter))
                 break;
-        }
+        simplifier.smoothBSpline(shorter, 3, shorter.length() / 100.0);
+        simplifier.reduceVertices(shorter);
+        simplifier.collapseCloseVertices(shorter);
         if (shorter.check() && shorter.toolPathLength() < path.toolPathLength())
             path = shorter;
     }

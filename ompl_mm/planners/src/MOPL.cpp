@@ -169,15 +169,15 @@ namespace ompl_mm
         for (const PrimitivePtr &primitive : primitives_)
             if (!pickup_)
                 pickup_ = dynamic_cast<const Pickup *>(primitive.get());
-        ikTimeAtClear_ = primitivesIkTime();
+        ikTimeAtClear_ = ikTimeSoFar();
     }
 
-    double MOPL::primitivesIkTime() const
+    double MOPL::ikTimeSoFar() const
     {
         double total = 0.0;
         for (const PrimitivePtr &primitive : primitives_)
             total += primitive->inverseKinematicsTime();
-        return total;
+        return total + (simplifier_ ? simplifier_->inverseKinematicsTime() : 0.0);
     }
 
     bool MOPL::holdsTwo(const ob::State *state) const
@@ -213,7 +213,7 @@ namespace ompl_mm
             goalTree_->clear();
         sampler_.reset();
         statistics_ = MOPLStatistics();
-        ikTimeAtClear_ = primitivesIkTime();
+        ikTimeAtClear_ = ikTimeSoFar();
     }
 
     void MOPL::restart()
@@ -383,7 +383,7 @@ namespace ompl_mm
         const std::uint64_t freeBefore = checker ? checker->freeQueryCount() : 0;
         const auto countQueries = [&]
         {
-            statistics_.ikTime = primitivesIkTime() - ikTimeAtClear_;
+            statistics_.ikTime = ikTimeSoFar() - ikTimeAtClear_;
             if (checker)
             {
                 statistics_.collisionQueries = checker->queryCount() - queriesBefore;
