@@ -17,8 +17,11 @@ from run_records import check_binary, run_app
 # MOPL paper, Table I (200 runs, 3.1 GHz desktop, 2015): mean values.
 PAPER = {
     "mobile_blocked": {"timeout_s": 60, "success": 97.5, "time_mean_s": 10.966, "time_std_s": 9.676,
-                       "nn_share": 83.0, "iterations": 4132, "path_vertices": 63.7, "length_m": 17.389,
-                       "transit": 6.462, "push": 5.462, "transfer": 0.0},
+                       "nn_share": 83.0, "ik_share": 0.0, "iterations": 4132, "path_vertices": 63.7,
+                       "length_m": 17.389, "transit": 6.462, "push": 5.462, "transfer": 0.0},
+    "kuka_table": {"timeout_s": 60, "success": 100.0, "time_mean_s": 4.96, "time_std_s": 2.33,
+                   "nn_share": 12.0, "ik_share": 63.0, "iterations": 225, "path_vertices": 75,
+                   "length_m": 8.112, "transit": 4.5, "push": 0.3, "transfer": 3.5},
 }
 
 
@@ -39,12 +42,15 @@ def report(name, results):
         ("success [%]", f"{100.0 * len(solved) / len(results):.1f}", "success"),
         ("time median [s]", f"{med:.3f}", ""),
         ("time mean ± std [s]", f"{mean:.3f} ± {std:.3f}", "time_mean_s"),
-        ("time max [s]", f"{max(times):.3f}" if times else "-", ""),
+        ("time 90th percentile / max [s]",
+         f"{statistics.quantiles(times, n=10)[-1]:.3f} / {max(times):.3f}" if len(times) > 1 else "-", ""),
         ("nearest-neighbour share [%] (of total time; median per run)",
          f"{share('time_nearest_s'):.1f} ({statistics.median(per_run_nn):.1f})" if per_run_nn else "-", "nn_share"),
         ("propagate share [%]", f"{share('time_propagate_s'):.1f}", ""),
         ("connect share [%]", f"{share('time_connect_s'):.1f}", ""),
         ("sampling share [%]", f"{share('time_sampling_s'):.1f}", ""),
+        ("smoothing share [%]", f"{share('time_smoothing_s'):.1f}", ""),
+        ("IK share [%] (inside the parts above)", f"{share('time_ik_s'):.1f}", "ik_share"),
         ("iterations (mean)", f"{statistics.mean(r['stats']['iterations'] for r in solved):.0f}", "iterations"),
         ("tree vertices (mean)", f"{statistics.mean(r['tree_vertices'] for r in solved):.0f}", ""),
         ("collision queries (mean)", f"{statistics.mean(r['stats']['collision_queries'] for r in solved):.0f}", ""),
