@@ -14,7 +14,7 @@ namespace ompl_mm
         kinematics is the expensive part). */
     struct MetricPoint
     {
-        std::vector<double> joints;                                       ///< metres or radians
+        std::vector<double> joints;  ///< each times its group's weight (Weights), metres or radians
         Eigen::Vector3d tool{Eigen::Vector3d::Zero()};                    ///< tool point in the world, metres
         Eigen::Quaterniond toolRotation{Eigen::Quaterniond::Identity()};  ///< tool frame's world rotation
         std::vector<Eigen::Vector3d> objects;  ///< base centres in the world, metres
@@ -33,12 +33,15 @@ namespace ompl_mm
     {
     public:
         /** Weights of the metric; defaults are the paper's values for arms. The robot term is
-            robotWeight * (jointWeight * joint distance + toolWeight * tool distance +
-            rotationWeight * (1 - |q_a . q_b|) of the tool rotations). */
+            robotWeight * (|W (q_a - q_b)| + toolWeight * tool distance + rotationWeight * (1 -
+            |r_a . r_b|) of the tool rotations r), where the diagonal W weighs each joint by its
+            group: baseWeight for a mobile base's joints (RobotModel::isBaseJoint), jointWeight for
+            the others (an arm's, a torso's). */
         struct Weights
         {
             double robotWeight{1.0};          ///< factor on the whole robot term
-            double jointWeight{0.5};          ///< on the joint-space distance (metres or radians)
+            double jointWeight{0.5};          ///< on the joints that are no base joints (radians or metres)
+            double baseWeight{1.0};           ///< on a mobile base's joints (metres)
             double toolWeight{1.0};           ///< on the tool point's distance, per metre
             double rotationWeight{2.0};       ///< on the tool's rotation distance (0 to 1)
             double movingObjectPenalty{0.1};  ///< added per object that moves, metres
@@ -47,16 +50,17 @@ namespace ompl_mm
             double contactDistance{0.08};  ///< closer than this, no travel to the object is counted, metres
         };
 
-        /** Weights for a robot: the paper's for arms; for a robot whose moving joints are all
-            prismatic the joints are the tool's position, so its robot term is the joint distance
-            alone (jointWeight 1, toolWeight and rotationWeight 0), as in the paper's mobile scene. */
+        /** Weights for a robot: the paper's for arms; for a robot that is a mobile base alone
+            (every joint a base joint) the joints are the tool's position, so its robot term is the
+            joint distance alone (toolWeight and rotationWeight 0), as in the paper's mobile scene. */
         static Weights defaultWeights(const RobotModel &robot);
 
         /** Starts with defaultWeights() of the space's robot.
             @throws ompl::Exception when the space has more than MAX_OBJECTS objects. */
         explicit ManipulationMetric(const ManipulationStateSpace *space);
 
-        /** Sets the weights; they count from the next distance. */
+        /** Sets the weights; they count for points made from now on (makePoint(), makeQuery()),
+            so a planner sets them before it builds its trees. */
         void setWeights(const Weights &weights);
         /** The weights in use. */
         const Weights &weights() const { return weights_; }
@@ -93,16 +97,16 @@ namespace ompl_mm
             must move when the query defines it and its pose differs (beyond 1e-9). */
         ObjectCost objectCost(const MetricPoint &objects, const Query &query) const;
 
-        /** A lower bound of the robot term for robots whose joints lie at least jointDistance and
-            whose tool lies at least toolDistance from the query's (0 when its robot is undefined). */
+        /** A lower bound of the robot term for robots whose weighted joints (MetricPoint::joints)
+            lie at least jointDistance and whose tool lies at least toolDistance from the query's (0
+            when its robot is undefined). */
         double robotLowerBound(const Query &query, double jointDistance, double toolDistance) const
         {
             if (!query.robotDefined)
                 return 0.0;
             if (jointDistanceOnly_)
                 return jointDistance;
-            return weights_.robotWeight *
-                   (weights_.jointWeight * jointDistance + weights_.toolWeight * toolDistance);
+            return weights_.robotWeight * (jointDistance + weights_.toolWeight * toolDistance);
         }
         /** False when robotLowerBound() ignores the tool distance (the plain joint distance), so callers may
             skip computing it. */
@@ -177,8 +181,10 @@ namespace ompl_mm
 
         const ManipulationStateSpace *space_;
         Weights weights_;
-        /** The robot term is the plain joint distance (tool and rotation weights 0, robotWeight *
-            jointWeight 1): the hot loops then skip the tool's terms. */
+        /** Per joint, the weight of its group (Weights). */
+        std::vector<double> jointScales_;
+        /** The robot term is the weighted joint distance alone (tool and rotation weights 0,
+            robotWeight 1): the hot loops then skip the tool's terms. */
         bool jointDistanceOnly_{false};
     };
 }  // namespace ompl_mm

@@ -52,9 +52,9 @@ namespace ompl_mm
         Use with a ManipulationStateSpace, a ManipulationValidityChecker and a ManipulationGoal
         (ManipulationSetup wires them). Requires primitives (setPrimitives) before setup(). Declared
         parameters: connect_step, vertex_step, restart_iterations, smoothing_attempts, the metric's
-        weights (robot_weight, joint_weight, tool_weight, rotation_weight, moving_object_penalty,
-        move_to_object_penalty, move_to_object_factor, contact_distance) and the sampler's
-        probabilities (object_sample_probability, undefined_probability, start_value_probability,
+        weights (robot_weight, joint_weight, base_joint_weight, tool_weight, rotation_weight,
+       moving_object_penalty, move_to_object_penalty, move_to_object_factor, contact_distance) and the
+       sampler's probabilities (object_sample_probability, undefined_probability, start_value_probability,
         random_robot_probability, each in [0, 1]).
 
         @par External documentation

@@ -81,6 +81,10 @@ namespace ompl_mm
 
         /** True when every moving joint is prismatic (false for a robot without moving joints). */
         bool allJointsPrismatic() const;
+        /** True when moving joint i belongs to a mobile base: it is prismatic and no turning joint
+            lies between it and the root, so it translates everything below it along a fixed world
+            axis. @pre i < dof(). */
+        bool isBaseJoint(unsigned int i) const;
 
         /** Index of the link called name, or -1 when there is none. */
         int findLink(const std::string &name) const;

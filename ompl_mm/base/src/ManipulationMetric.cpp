@@ -59,7 +59,10 @@ namespace ompl_mm
     void ManipulationMetric::makePoint(const ompl::base::State *state, MetricPoint &point) const
     {
         const double *q = space_->robotValues(state);
-        point.joints.assign(q, q + space_->robotDimension());
+        // weighted once here, so that every distance of these points is the plain Euclidean one
+        point.joints.resize(space_->robotDimension());
+        for (std::size_t j = 0; j < point.joints.size(); ++j)
+            point.joints[j] = jointScales_[j] * q[j];
         const Eigen::Isometry3d tool = space_->model()->toolFrame(q);
         point.tool = tool.translation();
         point.toolRotation = Eigen::Quaterniond(tool.linear());
@@ -95,23 +98,29 @@ namespace ompl_mm
             1.0 -
             std::abs(Eigen::Map<const Eigen::Vector4d>(packedVertex + 3).dot(point.toolRotation.coeffs()));
         const double tool = (Eigen::Map<const Eigen::Vector3d>(packedVertex) - point.tool).norm();
-        return weights_.robotWeight * (weights_.jointWeight * std::sqrt(squared) +
-                                       weights_.toolWeight * tool + weights_.rotationWeight * rotation);
+        return weights_.robotWeight *
+               (std::sqrt(squared) + weights_.toolWeight * tool + weights_.rotationWeight * rotation);
     }
 
     void ManipulationMetric::setWeights(const Weights &weights)
     {
         weights_ = weights;
-        jointDistanceOnly_ = weights.toolWeight == 0.0 && weights.rotationWeight == 0.0 &&
-                             weights.robotWeight * weights.jointWeight == 1.0;
+        const RobotModel &robot = space_->model()->robot();
+        jointScales_.resize(robot.dof());
+        for (unsigned int j = 0; j < robot.dof(); ++j)
+            jointScales_[j] = robot.isBaseJoint(j) ? weights.baseWeight : weights.jointWeight;
+        jointDistanceOnly_ =
+            weights.toolWeight == 0.0 && weights.rotationWeight == 0.0 && weights.robotWeight == 1.0;
     }
 
     ManipulationMetric::Weights ManipulationMetric::defaultWeights(const RobotModel &robot)
     {
         Weights weights;
-        if (robot.allJointsPrismatic())
+        bool baseOnly = robot.dof() > 0;
+        for (unsigned int j = 0; j < robot.dof(); ++j)
+            baseOnly = baseOnly && robot.isBaseJoint(j);
+        if (baseOnly)
         {
-            weights.jointWeight = 1.0;
             weights.toolWeight = 0.0;
             weights.rotationWeight = 0.0;
         }

@@ -110,6 +110,7 @@ namespace ompl_mm
         };
         weight("robot_weight", &ManipulationMetric::Weights::robotWeight, "0.:0.1:100.");
         weight("joint_weight", &ManipulationMetric::Weights::jointWeight, "0.:0.1:100.");
+        weight("base_joint_weight", &ManipulationMetric::Weights::baseWeight, "0.:0.1:100.");
         weight("tool_weight", &ManipulationMetric::Weights::toolWeight, "0.:0.1:100.");
         weight("rotation_weight", &ManipulationMetric::Weights::rotationWeight, "0.:0.1:100.");
         weight("moving_object_penalty", &ManipulationMetric::Weights::movingObjectPenalty, "0.:0.1:100.");

@@ -400,6 +400,23 @@ namespace ompl_mm
         return base * frame;
     }
 
+    bool RobotModel::isBaseJoint(unsigned int i) const
+    {
+        const int joint = variableJoints_[i];
+        if (joints_[joint].type != Joint::Type::Prismatic)
+            return false;
+        // up from the joint's child link: every moving joint above must slide too
+        for (std::size_t l = 0; l < links_.size(); ++l)
+            if (links_[l].joint == joint)
+                for (int up = links_[l].parent; up >= 0 && links_[up].parent >= 0; up = links_[up].parent)
+                {
+                    const Joint &above = joints_[links_[up].joint];
+                    if (above.variable >= 0 && above.type != Joint::Type::Prismatic)
+                        return false;
+                }
+        return true;
+    }
+
     bool RobotModel::allJointsPrismatic() const
     {
         for (unsigned int i = 0; i < dof(); ++i)
