@@ -1,6 +1,7 @@
 // Tests for ManipulationMetric.
 #include "ompl_mm/base/ManipulationMetric.h"
 
+#include "common/MobileArm.h"
 #include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
@@ -226,42 +227,15 @@ TEST(ManipulationMetricWeights, DefaultsFollowTheRobotsJoints)
     EXPECT_EQ(base.rotationWeight, 0.0);
 }
 
-namespace
-{
-    /** A mobile base (x, y prismatic) carrying a shoulder about z, a lift sliding along z under it
-        and a hand 0.5 m out. */
-    const char *const MOBILE_ARM = R"(<?xml version="1.0"?>
-<robot name="mobile_arm">
-  <link name="world"/>
-  <joint name="x" type="prismatic"><parent link="world"/><child link="sled"/>
-    <axis xyz="1 0 0"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
-  <link name="sled"/>
-  <joint name="y" type="prismatic"><parent link="sled"/><child link="base"/>
-    <axis xyz="0 1 0"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
-  <link name="base"/>
-  <joint name="shoulder" type="revolute"><parent link="base"/><child link="column"/>
-    <origin xyz="0 0 0.3"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
-  <link name="column"/>
-  <joint name="lift" type="prismatic"><parent link="column"/><child link="arm"/>
-    <axis xyz="0 0 1"/><limit lower="0" upper="0.5" effort="1" velocity="1"/></joint>
-  <link name="arm"/>
-  <joint name="wrist" type="fixed"><parent link="arm"/><child link="hand"/><origin xyz="0.5 0 0"/></joint>
-  <link name="hand"/>
-</robot>)";
-}  // namespace
-
 TEST(ManipulationMetricWeights, EachJointCountsWithItsGroupsWeight)
 {
-    Scene scene;
-    scene.robot.toolLink = "hand";
-    auto model =
-        std::make_shared<ManipulationModel>(scene, RobotModel::fromUrdfString(MOBILE_ARM, "mobile_arm"));
+    const ManipulationModelPtr model = mobileArm();
     const RobotModel &robot = model->robot();
     // the base's joints slide with nothing turning above them; the lift slides under the shoulder
     EXPECT_TRUE(robot.isBaseJoint(0));
     EXPECT_TRUE(robot.isBaseJoint(1));
-    EXPECT_FALSE(robot.isBaseJoint(2));
-    EXPECT_FALSE(robot.isBaseJoint(3));
+    for (unsigned int j = 2; j < robot.dof(); ++j)
+        EXPECT_FALSE(robot.isBaseJoint(j)) << robot.variableJoint(j).name;
     // a robot with an arm keeps the arm's weights
     const ManipulationMetric::Weights defaults = ManipulationMetric::defaultWeights(robot);
     EXPECT_EQ(defaults.toolWeight, 1.0);
@@ -274,21 +248,22 @@ TEST(ManipulationMetricWeights, EachJointCountsWithItsGroupsWeight)
     w.jointWeight = 0.25;
     metric.setWeights(w);
     ob::State *a = space.allocState(), *b = space.allocState();
-    const std::vector<double> qa{0.1, -0.2, 0.3, 0.1}, qb{0.7, 0.2, -0.9, 0.4};
+    const std::vector<double> qa{0.1, -0.2, 0.3, 0.1, -0.5}, qb{0.7, 0.2, -0.9, 0.4, 0.6};
     std::copy(qa.begin(), qa.end(), space.robotValues(a));
     std::copy(qb.begin(), qb.end(), space.robotValues(b));
     MetricPoint pa, pb;
     metric.makePoint(a, pa);
     metric.makePoint(b, pb);
-    // written out: the base joints weighed by 2, the shoulder and the lift by 0.25, the tool from
-    // forward kinematics, the rotation of the shoulder's turn about z
+    // written out: the base joints weighed by 2, the others by 0.25, the tool and its rotation from
+    // forward kinematics
     double squared = 0.0;
     for (std::size_t j = 0; j < qa.size(); ++j)
         squared += std::pow((j < 2 ? 2.0 : 0.25) * (qa[j] - qb[j]), 2);
-    const double toolDistance =
-        (model->toolFrame(qa.data()).translation() - model->toolFrame(qb.data()).translation()).norm();
-    const double rotation = 1.0 - std::abs(std::cos(0.5 * (qa[2] - qb[2])));
-    EXPECT_NEAR(metric.distance(pa, pb), std::sqrt(squared) + toolDistance + 2.0 * rotation, 1e-12);
+    const Eigen::Isometry3d ta = model->toolFrame(qa.data()), tb = model->toolFrame(qb.data());
+    const double rotation =
+        1.0 - std::abs(Eigen::Quaterniond(ta.linear()).dot(Eigen::Quaterniond(tb.linear())));
+    EXPECT_NEAR(metric.distance(pa, pb),
+                std::sqrt(squared) + (ta.translation() - tb.translation()).norm() + 2.0 * rotation, 1e-12);
     space.freeState(a);
     space.freeState(b);
 }
