@@ -62,6 +62,13 @@ namespace ompl_mm
         CollisionWorld::SweepCheck checkSweep(const ompl::base::State *s1, const ompl::base::State *s2) const;
 
     private:
+        /** Whether a primitive explains the motion, (with probe) the PROBES states along it are
+            valid, every configuration along it is collision-free and s2 is valid, with the safe
+            fraction of the continuous check (0 when it did not run or s2 is invalid); counted as a
+            valid or invalid motion. */
+        CollisionWorld::SweepCheck judge(const ompl::base::State *s1, const ompl::base::State *s2,
+                                         bool probe) const;
+
         /** A state seen as a collision configuration: its object poses and resting surfaces (the
     joints are read in place). */
         struct ConfigurationOf

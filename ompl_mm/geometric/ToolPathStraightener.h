@@ -52,7 +52,6 @@ namespace ompl_mm
 
         ompl::base::SpaceInformationPtr si_;
         const ManipulationStateSpace *space_;
-        std::shared_ptr<const ManipulationMotionValidator> validator_;
         IkSolver ik_;
         ompl::RNG rng_{1};  ///< what the solver asks for; NearSeed solves draw nothing from it
     };

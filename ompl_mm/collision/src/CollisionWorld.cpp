@@ -370,11 +370,14 @@ namespace ompl_mm
         const BodySweep still;
         std::vector<SweptPair> &pairs = sweptPairs_;
         pairs.clear();
+        // true when the pair was added
         const auto add = [&pairs](const Body &a, const Body &b, const BodySweep &sa, const BodySweep &sb)
         {
             const double rate = (sa.translation - sb.translation).norm() + sa.spread + sb.spread;
-            if (rate > 0.0)  // bodies that keep their distance keep what both ends' checks found
-                pairs.push_back({&a, &b, rate, sa.spread == 0.0 && sb.spread == 0.0});
+            if (rate <= 0.0)  // bodies that keep their distance keep what both ends' checks found
+                return false;
+            pairs.push_back({&a, &b, rate, sa.spread == 0.0 && sb.spread == 0.0});
+            return true;
         };
         for (std::size_t l = 0; l < robotBodies_.size(); ++l)
         {
@@ -401,19 +404,14 @@ namespace ompl_mm
             {
                 // an object that rests on the obstacle at both ends slides on its (planar, convex)
                 // surface; one put down on it or lifted off it may touch it but not sink into it
+                // (an obstacle without a convex core to measure allows its contacts)
                 const bool restsFrom = restsOn(from, static_cast<int>(i), obstacle.owner);
                 const bool restsTo = restsOn(to, static_cast<int>(i), obstacle.owner);
-                if (restsFrom && restsTo)
+                const bool restsAtOneEnd = restsFrom != restsTo;
+                if ((restsFrom && restsTo) || (restsAtOneEnd && !obstacle.supportCore))
                     continue;
-                const std::size_t before = pairs.size();
-                add(objectBodies_[i], obstacle, objectSweeps[i], still);
-                if ((restsFrom || restsTo) && pairs.size() > before)
-                {
-                    if (obstacle.supportCore)
-                        pairs.back().againstCore = true;
-                    else
-                        pairs.pop_back();  // no convex core to measure: its contacts are allowed
-                }
+                if (add(objectBodies_[i], obstacle, objectSweeps[i], still))
+                    pairs.back().againstCore = restsAtOneEnd;
             }
             for (std::size_t j = i + 1; j < objectSweeps.size(); ++j)
                 add(objectBodies_[i], objectBodies_[j], objectSweeps[i], objectSweeps[j]);

@@ -64,46 +64,45 @@ namespace ompl_mm
                                  });
     }
 
+    CollisionWorld::SweepCheck ManipulationMotionValidator::judge(const ompl::base::State *s1,
+                                                                  const ompl::base::State *s2,
+                                                                  bool probe) const
+    {
+        CollisionWorld::SweepCheck check{false, 0.0};
+        if (explain(s1, s2))
+        {
+            check.free = true;
+            for (unsigned int k = 1; probe && check.free && k <= PROBES; ++k)
+            {
+                space_->interpolate(s1, s2, static_cast<double>(k) / (PROBES + 1), along_);
+                check.free = si_->isValid(along_);
+            }
+            if (check.free)
+                check = checkSweep(s1, s2);
+            // the end's other rules (joint limits, support): short of it, stay where the sweep began
+            if (check.free && !si_->isValid(s2))
+                check = {false, 0.0};
+        }
+        ++(check.free ? valid_ : invalid_);
+        return check;
+    }
+
     bool ManipulationMotionValidator::checkMotion(const ompl::base::State *s1,
                                                   const ompl::base::State *s2) const
     {
-        if (!explain(s1, s2))
-        {
-            ++invalid_;
-            return false;
-        }
-        for (unsigned int k = 1; k <= PROBES; ++k)
-        {
-            space_->interpolate(s1, s2, static_cast<double>(k) / (PROBES + 1), along_);
-            if (!si_->isValid(along_))
-            {
-                ++invalid_;
-                return false;
-            }
-        }
-        const bool free = checkSweep(s1, s2).free && si_->isValid(s2);
-        ++(free ? valid_ : invalid_);
-        return free;
+        return judge(s1, s2, true).free;
     }
 
     bool ManipulationMotionValidator::checkMotion(const ompl::base::State *s1, const ompl::base::State *s2,
                                                   std::pair<ompl::base::State *, double> &lastValid) const
     {
-        CollisionWorld::SweepCheck check{false, 0.0};
-        if (explain(s1, s2))
-        {
-            check = checkSweep(s1, s2);
-            // the end's other rules (joint limits, support): short of it, stay where the sweep began
-            if (check.free && !si_->isValid(s2))
-                check = {false, 0.0};
-        }
+        const CollisionWorld::SweepCheck check = judge(s1, s2, false);
         if (!check.free)
         {
             lastValid.second = check.safeFraction;
             if (lastValid.first)
                 space_->interpolate(s1, s2, lastValid.second, lastValid.first);
         }
-        ++(check.free ? valid_ : invalid_);
         return check.free;
     }
 }  // namespace ompl_mm

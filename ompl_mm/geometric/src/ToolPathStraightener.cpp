@@ -4,27 +4,16 @@
 
 namespace ompl_mm
 {
-    namespace
-    {
-        std::shared_ptr<const ManipulationMotionValidator> manipulationValidator(
-            const ompl::base::SpaceInformationPtr &si)
-        {
-            auto validator =
-                std::dynamic_pointer_cast<const ManipulationMotionValidator>(si->getMotionValidator());
-            if (!validator)
-                throw ompl::Exception(
-                    "ToolPathStraightener needs a ManipulationMotionValidator on the space information "
-                    "(ManipulationSetup installs one)");
-            return validator;
-        }
-    }  // namespace
-
     ToolPathStraightener::ToolPathStraightener(const ompl::base::SpaceInformationPtr &si)
         : si_(si),
           space_(si->getStateSpace()->as<ManipulationStateSpace>()),
-          validator_(manipulationValidator(si)),
           ik_(space_->model()->toolPointChain(), space_->model()->scene().robot.basePose)
     {
+        // its waypoints are labelled and checked as the manipulation validator sees motions
+        if (!std::dynamic_pointer_cast<const ManipulationMotionValidator>(si->getMotionValidator()))
+            throw ompl::Exception(
+                "ToolPathStraightener needs a ManipulationMotionValidator on the space information "
+                "(ManipulationSetup installs one)");
     }
 
     bool ToolPathStraightener::halfway(const ompl::base::State *a, const ompl::base::State *b,
