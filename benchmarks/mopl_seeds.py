@@ -22,6 +22,12 @@ PAPER = {
     "kuka_table": {"timeout_s": 60, "success": 100.0, "time_mean_s": 4.96, "time_std_s": 2.33,
                    "nn_share": 12.0, "ik_share": 63.0, "iterations": 225, "path_vertices": 75,
                    "length_m": 8.112, "transit": 4.5, "push": 0.3, "transfer": 3.5},
+    "kuka_cabinet": {"timeout_s": 180, "success": 96.5, "time_mean_s": 59.8, "time_std_s": 40.0,
+                     "nn_share": 47.0, "ik_share": 45.0, "iterations": 1693, "path_vertices": 143,
+                     "length_m": 11.07, "transit": 12.2, "push": 7.2, "transfer": 4.4},
+    "meka_cleanup": {"timeout_s": 600, "success": 100.0, "time_mean_s": 152.4, "time_std_s": 81.1,
+                     "nn_share": 49.0, "ik_share": 38.0, "iterations": 3505, "path_vertices": 104,
+                     "length_m": 6.17, "transit": 5.9, "push": 1.7, "transfer": 4.2},
 }
 
 

@@ -56,6 +56,10 @@ namespace ompl_mm
             short: some joint would turn more than MAX_SHORT_MOVE (so that the straight joint motion
             stays close to the straight tool motion). */
         bool solveShortMove(const Eigen::Vector3d &offset, const Eigen::Vector3d &local, double *q);
+        /** Sets q (also the seed) so that the tool point reaches `tool` (world frame), position and
+            orientation: full 6-D IK, looking as far as `scope` allows. False, q unchanged, when no
+            solution is found. */
+        bool solveToolPose(const Eigen::Isometry3d &tool, double *q, IkScope scope = IkScope::Anywhere);
         /** Sets q (also the seed) so that an object held in the tool by `grasp` (its frame in the
             tool point's frame) comes to `target` (its yaw free). False, q unchanged, when no
             solution is found. */
@@ -100,7 +104,8 @@ namespace ompl_mm
         /** The solver's frame relative to the tool point at joints q. */
         Eigen::Isometry3d solvedInTool(const double *q) const;
         /** Solves for the solver's frame at target from seed q, into q when found. */
-        bool solve(const Eigen::Isometry3d &target, IkTask task, double *q);
+        bool solve(const Eigen::Isometry3d &target, IkTask task, double *q,
+                   IkScope scope = IkScope::Anywhere);
 
         const ManipulationStateSpace *space_;
         Settings settings_;

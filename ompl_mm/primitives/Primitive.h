@@ -2,6 +2,8 @@
 
 #include "ompl_mm/primitives/Trajectory.h"
 
+#include <ompl/base/StateValidityChecker.h>
+
 #include <functional>
 #include <memory>
 #include <optional>
@@ -49,6 +51,15 @@ namespace ompl_mm
             that need none); planners report it (MOPL's time_ik_s). */
         virtual double inverseKinematicsTime() const { return 0.0; }
 
+        /** Lets the primitive turn down inverse kinematics solutions whose states `checker` finds
+            invalid (say, the arm folded into itself) and try another, so that the waypoints it
+            makes are worth connecting; obstacles along its motions stay the connect step's
+            concern. Without a checker (the default) every solution is accepted. */
+        void setStateValidityChecker(ompl::base::StateValidityCheckerPtr checker)
+        {
+            checker_ = std::move(checker);
+        }
+
     protected:
         /** True when every object rests on a support surface in state. */
         bool allObjectsRest(const ompl::base::State *state) const;
@@ -59,12 +70,25 @@ namespace ompl_mm
             several could be (MOPL's rule). */
         int nearestToTool(const ompl::base::State *state,
                           const std::function<bool(unsigned int)> &qualifies) const;
+        /** True when the object slides on its surface from a to b: it moves in x, y only (its
+            height the same within 1e-9 m), as a push moves it. */
+        bool slides(const ompl::base::State *a, const ompl::base::State *b, unsigned int object) const;
+        /** The object a push from a to b moves: every object rests at both ends, exactly one moves,
+            and it slides (slides()) keeping its yaw; -1 when that is not so. */
+        int onlySlidingObject(const ompl::base::State *a, const ompl::base::State *b) const;
+
+        /** True when no checker is set or the checker finds state valid. */
+        bool acceptable(const ompl::base::State *state) const
+        {
+            return !checker_ || checker_->isValid(state);
+        }
 
         const ManipulationStateSpace *space_;  ///< the space the primitive plans in, not owned
 
     private:
         std::string name_;
         PrimitiveKind kind_;
+        ompl::base::StateValidityCheckerPtr checker_;
     };
 
     /** Shared ownership of a primitive: the setup, the planner and its empty-space planner hold the

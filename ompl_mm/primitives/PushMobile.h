@@ -49,9 +49,6 @@ namespace ompl_mm
                                             const ompl::base::State *to) const override;
 
     private:
-        /** True when the object slides on its surface between a and b (moves in x, y only). */
-        bool slides(const ompl::base::State *a, const ompl::base::State *b, unsigned int object) const;
-
         PlanarBase base_;
         std::vector<double> standoffs_;
     };

@@ -44,10 +44,10 @@ namespace ompl_mm
         return model.toolFrame(q).inverse() * ik_->chain().toolPose(q, model.scene().robot.basePose);
     }
 
-    bool Grasping::solve(const Eigen::Isometry3d &target, IkTask task, double *q)
+    bool Grasping::solve(const Eigen::Isometry3d &target, IkTask task, double *q, IkScope scope)
     {
         std::copy_n(q, work_.size(), work_.begin());
-        if (!ik_->solve(target, task, work_.data(), rng_))
+        if (!ik_->solve(target, task, work_.data(), rng_, scope))
             return false;
         std::copy(work_.begin(), work_.end(), q);
         return true;
@@ -118,6 +118,11 @@ namespace ompl_mm
                 return false;
         std::copy(work_.begin(), work_.end(), q);
         return true;
+    }
+
+    bool Grasping::solveToolPose(const Eigen::Isometry3d &tool, double *q, IkScope scope)
+    {
+        return solve(tool * solvedInTool(q), IkTask::Pose6D, q, scope);
     }
 
     bool Grasping::solveCarry(const Eigen::Isometry3d &grasp, const ObjectPose &target, double *q)

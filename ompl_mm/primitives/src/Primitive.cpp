@@ -1,9 +1,16 @@
 #include "ompl_mm/primitives/Primitive.h"
 
+#include <cmath>
 #include <limits>
 
 namespace ompl_mm
 {
+    namespace
+    {
+        /** Differences below this are rounding, metres or radians. */
+        constexpr double SAME = 1e-9;
+    }  // namespace
+
     Primitive::Primitive(const ManipulationStateSpace *space, std::string name, PrimitiveKind kind)
         : space_(space), name_(std::move(name)), kind_(kind)
     {
@@ -41,5 +48,29 @@ namespace ompl_mm
             }
         }
         return object;
+    }
+
+    bool Primitive::slides(const ompl::base::State *a, const ompl::base::State *b, unsigned int object) const
+    {
+        const Eigen::Vector3d pa = space_->objectPosition(a, object);
+        const Eigen::Vector3d pb = space_->objectPosition(b, object);
+        return std::abs(pa.z() - pb.z()) < SAME && (pa - pb).head<2>().norm() > SAME;
+    }
+
+    int Primitive::onlySlidingObject(const ompl::base::State *a, const ompl::base::State *b) const
+    {
+        if (!allObjectsRest(a) || !allObjectsRest(b))
+            return -1;
+        int sliding = -1;
+        for (unsigned int i = 0; i < space_->objectCount(); ++i)
+        {
+            if (!space_->objectMoves(a, b, i))
+                continue;
+            if (sliding >= 0 || !slides(a, b, i) ||
+                std::abs(space_->objectYaw(a, i) - space_->objectYaw(b, i)) > SAME)
+                return -1;
+            sliding = static_cast<int>(i);
+        }
+        return sliding;
     }
 }  // namespace ompl_mm

@@ -2,6 +2,7 @@
 
 #include "ompl_core/io/InputError.h"
 #include "ompl_core/io/NumberText.h"
+#include "ompl_mm/primitives/ArmPush.h"
 #include "ompl_mm/primitives/Pickup.h"
 #include "ompl_mm/primitives/PushMobile.h"
 #include "ompl_mm/primitives/TransferRigid.h"
@@ -36,6 +37,34 @@ namespace ompl_mm
                     return std::unique_ptr<InverseKinematics>(std::move(solver));
                 };
             return std::make_shared<Grasping>(space, settings, factory);
+        }
+
+        /** An arm push called type whose hand pose defaults to `hand` (its tilts and turn). */
+        PrimitiveFactory::Builder armPush(const std::string &type, ArmPush::Settings hand)
+        {
+            return [type, hand](const ManipulationStateSpace *space, const PrimitiveParameters &params)
+            {
+                ArmPush::Settings settings = hand;
+                settings.standoff = params.number("standoff", settings.standoff);
+                settings.heightOffset = params.number("height_offset", settings.heightOffset);
+                settings.inwardTilt = params.angle("inward_tilt", settings.inwardTilt);
+                settings.downwardTilt = params.angle("downward_tilt", settings.downwardTilt);
+                settings.maxPushDistance = params.number("max_push_distance", settings.maxPushDistance);
+                settings.maxPushJointDistance =
+                    params.angle("max_push_joint_distance", settings.maxPushJointDistance);
+                settings.approachDistance = params.number("approach_distance", settings.approachDistance);
+                return std::make_shared<ArmPush>(space, type, makeGrasping(space, params, 0.0), settings);
+            };
+        }
+
+        /** The hand of a push with its given tilts, turned or not. */
+        ArmPush::Settings hand(double inwardDegrees, double downwardDegrees, bool turned)
+        {
+            ArmPush::Settings settings;
+            settings.inwardTilt = inwardDegrees * M_PI / 180.0;
+            settings.downwardTilt = downwardDegrees * M_PI / 180.0;
+            settings.turned = turned;
+            return settings;
         }
     }  // namespace
 
@@ -131,6 +160,10 @@ namespace ompl_mm
                      { return std::make_shared<Transit>(space); });
         registerType("push_mobile", [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
                      { return std::make_shared<PushMobile>(space, params.optionalNumber("standoff")); });
+        // the hands of the MOPL paper's KUKA scenes
+        registerType("push_interior", armPush("push_interior", hand(0.0, 65.0, false)));
+        registerType("push_exterior", armPush("push_exterior", hand(0.0, 65.0, true)));
+        registerType("push_frontal", armPush("push_frontal", hand(30.0, 0.0, false)));
         registerType("pickup",
                      [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
                      {

@@ -9,7 +9,6 @@ namespace ompl_mm
 {
     namespace
     {
-        constexpr double SAME = 1e-9;
         // pushes made by other code than propagate (OMPL's shortcuts, paths read back) hold the
         // standoff only up to rounding
         constexpr double ON_LINE = 1e-6;
@@ -44,13 +43,6 @@ namespace ompl_mm
         }
     }
 
-    bool PushMobile::slides(const ompl::base::State *a, const ompl::base::State *b, unsigned int object) const
-    {
-        const Eigen::Vector3d pa = space_->objectPosition(a, object);
-        const Eigen::Vector3d pb = space_->objectPosition(b, object);
-        return std::abs(pa.z() - pb.z()) < SAME && (pa - pb).head<2>().norm() > SAME;
-    }
-
     bool PushMobile::isUseful(const ompl::base::State *from, const ompl::base::State *to) const
     {
         return allObjectsRest(from) && allObjectsRest(to) &&
@@ -83,19 +75,9 @@ namespace ompl_mm
     std::optional<SegmentLabel> PushMobile::explain(const ompl::base::State *from,
                                                     const ompl::base::State *to) const
     {
-        if (!allObjectsRest(from) || !allObjectsRest(to) ||
-            !base_.onlyBaseMoves(space_->robotValues(from), space_->robotValues(to)))
+        if (!base_.onlyBaseMoves(space_->robotValues(from), space_->robotValues(to)))
             return std::nullopt;
-        int pushed = -1;
-        for (unsigned int i = 0; i < space_->objectCount(); ++i)
-        {
-            if (!space_->objectMoves(from, to, i))
-                continue;
-            if (pushed >= 0 || !slides(from, to, i) ||
-                std::abs(space_->objectYaw(from, i) - space_->objectYaw(to, i)) > SAME)
-                return std::nullopt;
-            pushed = static_cast<int>(i);
-        }
+        const int pushed = onlySlidingObject(from, to);
         if (pushed < 0)
             return std::nullopt;
         const Eigen::Vector2d a = space_->objectPosition(from, pushed).head<2>();

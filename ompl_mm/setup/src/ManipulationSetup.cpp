@@ -70,6 +70,8 @@ namespace ompl_mm
         goal_ = std::make_shared<ManipulationGoal>(si_);
         setGoal(goal_);
         primitives_ = factory.build(scene.primitives, space_.get());
+        for (const PrimitivePtr &primitive : primitives_)
+            primitive->setStateValidityChecker(checker_);
         si_->setMotionValidator(std::make_shared<ManipulationMotionValidator>(si_, primitives_));
         ProblemCheck(*space_).checkGoal(getProblemDefinition()->getStartState(0), primitives_);
         setPlannerByName(scene.planner);

@@ -1,8 +1,8 @@
-// Tests for MOPL on KUKA TABLE: solved for fixed seeds, and every solution re-checked from its
-// states alone, without its labels: joints within limits, every object either resting on a
-// surface or held by the tool with one grasp from its pickup to its place, at most one object
-// held, nothing moving that is neither carried nor at rest, the goal reached; and OMPL's own
-// PathGeometric::check().
+// Tests for MOPL on the arm scenes (KUKA TABLE, KUKA CABINET): solved for fixed seeds, and every
+// solution re-checked from its states alone, without its labels: joints within limits, every
+// object either resting on a surface or held by the tool with one grasp from its pickup to its
+// place, at most one object held, an object that slides on its surface moving with the tool (a
+// push) and alone, nothing else moving, the goal reached; and OMPL's own PathGeometric::check().
 #include "common/MobileBlocked.h"
 #include "ompl_core/run/GlobalSeed.h"
 
@@ -28,6 +28,11 @@ namespace
     constexpr int STEPS = 20;
     /** How far a held object may drift in the tool frame along a segment, metres. */
     constexpr double GRASP_DRIFT = 1e-4;
+    /** How far a pushed object may drift from the tool along a push, metres: a push keeps the
+        tool within 5 mm of its pose at either end. */
+    constexpr double PUSH_DRIFT = 0.01;
+    /** The front of KUKA CABINET's cabinet, y: objects beyond it are inside. */
+    constexpr double CABINET_FRONT = -0.65;
 
     Scene kukaTable()
     {
@@ -85,10 +90,22 @@ namespace
                             << "segment " << i;
                         continue;
                     }
-                    // a moving object is carried: held at one end at least, its grasp kept
-                    ASSERT_TRUE(surfaceUnder(scene, space.objectPosition(a, o)) < 0 ||
-                                surfaceUnder(scene, space.objectPosition(b, o)) < 0)
-                        << "object " << o << " slides in segment " << i;
+                    if (surfaceUnder(scene, space.objectPosition(a, o)) >= 0 &&
+                        surfaceUnder(scene, space.objectPosition(b, o)) >= 0)
+                    {
+                        // a sliding object is pushed: it stays on its surface and moves with the
+                        // tool, and nothing else moves
+                        ASSERT_TRUE(rests) << "object " << o << " leaves its surface in segment " << i;
+                        const Eigen::Vector3d offset =
+                            space.toolPosition(between) - space.objectPosition(between, o);
+                        ASSERT_LE((offset - (space.toolPosition(a) - space.objectPosition(a, o))).norm(),
+                                  PUSH_DRIFT)
+                            << "object " << o << " slides away from the tool in segment " << i << " at " << k;
+                        for (unsigned int other = 0; other < space.objectCount(); ++other)
+                            ASSERT_TRUE(other == o || !space.objectMoves(a, b, other)) << "segment " << i;
+                        continue;
+                    }
+                    // any other moving object is carried: held at one end at least, its grasp kept
                     ASSERT_LE((inTool(space, between, o) - inTool(space, a, o)).norm(), GRASP_DRIFT)
                         << "object " << o << " slips in the hand in segment " << i << " at " << k;
                 }
@@ -139,6 +156,28 @@ TEST_P(MOPLOnKukaTable, SolvesAndSolutionPassesTheRecheck)
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, MOPLOnKukaTable, ::testing::Values(1u, 2u, 4u));
+
+TEST(MOPLOnKukaCabinet, SolvesWithPushesIntoTheCabinetAndPassesTheRecheck)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const Scene scene = loadScene(OMPL_MM_SCENES_DIR "/kuka_cabinet.xml");
+    ompl_core::reseedOmpl(1);
+    ManipulationSetup setup(scene);
+    setup.mopl()->setSeed(1);
+    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(MAX_ITERATIONS)),
+              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const ManipulationPath &path = setup.manipulationPath();
+    EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
+    EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
+    const ManipulationStateSpace &space = *setup.manipulationSpace();
+    unsigned int intoCabinet = 0;
+    for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i)
+        if (path.label(i).kind == PrimitiveKind::Push &&
+            space.objectPosition(path.getState(i + 1), path.label(i).object).y() < CABINET_FRONT)
+            ++intoCabinet;
+    EXPECT_GE(intoCabinet, 1u);
+    recheck(space, path, scene);
+}
 
 TEST(MOPLOnKukaTable, SameSeedGivesSamePath)
 {

@@ -1,4 +1,5 @@
 // Tests for PrimitiveFactory.
+#include "ompl_mm/primitives/ArmPush.h"
 #include "ompl_mm/primitives/PrimitiveFactory.h"
 #include "ompl_mm/primitives/PushMobile.h"
 #include "ompl_mm/primitives/Transit.h"
@@ -167,8 +168,10 @@ TEST_F(Factory, ParametersReadNumbers)
 TEST_F(Factory, MessagesNameTheLineTheTypeAndTheParameter)
 {
     // the whole message of each check of the factory and of PrimitiveParameters
-    EXPECT_EQ(error({spec("pick_and_place")}),
-              "unit_scene.xml:17: unknown primitive <pick_and_place> (known: pickup, push_mobile, transfer_rigid, transit)");
+    EXPECT_EQ(
+        error({spec("pick_and_place")}),
+        "unit_scene.xml:17: unknown primitive <pick_and_place> (known: pickup, push_exterior, push_frontal, "
+        "push_interior, push_mobile, transfer_rigid, transit)");
     EXPECT_EQ(error({spec("push_mobile", {{"standoff", "0.4x"}})}),
               "unit_scene.xml:17: <push_mobile> parameter 'standoff' must be a finite number, got '0.4x'");
     EXPECT_EQ(error({spec("push_mobile", {{"standoff", "0.41"}, {"speed", "2"}})}),
@@ -203,4 +206,58 @@ TEST(PrimitiveFactoryRobot, PushMobileOnAnArmIsReportedAtItsLine)
         "unit_scene.xml:17: push_mobile needs a robot whose base moves along world x and y (two prismatic "
         "joints)");
     EXPECT_EQ(factory.build({spec("transit")}, &space).size(), 1u);
+}
+
+TEST_F(Factory, ArmPushesReadTheirHandAndLimits)
+{
+    const std::vector<PrimitivePtr> primitives =
+        factory_.build({spec("push_interior"),
+                        spec("push_exterior", {{"standoff", "0.2"},
+                                               {"height_offset", "-0.01"},
+                                               {"downward_tilt", "40deg"},
+                                               {"inward_tilt", "-15deg"},
+                                               {"max_push_distance", "0.05"},
+                                               {"max_push_joint_distance", "20deg"},
+                                               {"approach_distance", "0"}}),
+                        spec("push_frontal")},
+                       &space_);
+    ASSERT_EQ(primitives.size(), 3u);
+    const auto interior = std::dynamic_pointer_cast<ArmPush>(primitives[0]);
+    const auto exterior = std::dynamic_pointer_cast<ArmPush>(primitives[1]);
+    const auto frontal = std::dynamic_pointer_cast<ArmPush>(primitives[2]);
+    ASSERT_TRUE(interior && exterior && frontal);
+    EXPECT_EQ(exterior->name(), "push_exterior");
+    EXPECT_EQ(exterior->kind(), PrimitiveKind::Push);
+    // the defaults: the hands of the KUKA scenes
+    EXPECT_DOUBLE_EQ(interior->settings().standoff, 0.14);
+    EXPECT_NEAR(interior->settings().downwardTilt, 65.0 * M_PI / 180.0, 1e-12);
+    EXPECT_FALSE(interior->settings().turned);
+    EXPECT_TRUE(exterior->settings().turned);
+    EXPECT_NEAR(frontal->settings().inwardTilt, 30.0 * M_PI / 180.0, 1e-12);
+    EXPECT_DOUBLE_EQ(frontal->settings().downwardTilt, 0.0);
+    EXPECT_DOUBLE_EQ(interior->settings().maxPushDistance, 0.1);
+    EXPECT_NEAR(interior->settings().maxPushJointDistance, 30.0 * M_PI / 180.0, 1e-4);
+    // the values given
+    EXPECT_DOUBLE_EQ(exterior->settings().standoff, 0.2);
+    EXPECT_DOUBLE_EQ(exterior->settings().heightOffset, -0.01);
+    EXPECT_NEAR(exterior->settings().downwardTilt, 40.0 * M_PI / 180.0, 1e-12);
+    EXPECT_NEAR(exterior->settings().inwardTilt, -15.0 * M_PI / 180.0, 1e-12);
+    EXPECT_DOUBLE_EQ(exterior->settings().maxPushDistance, 0.05);
+    EXPECT_NEAR(exterior->settings().maxPushJointDistance, 20.0 * M_PI / 180.0, 1e-12);
+    EXPECT_DOUBLE_EQ(exterior->settings().approachDistance, 0.0);
+}
+
+TEST_F(Factory, ArmPushErrorsNameTheLine)
+{
+    EXPECT_EQ(error({spec("push_interior", {{"standoff", "0"}})}),
+              "unit_scene.xml:17: push_interior standoff must be positive, got 0.000000");
+    EXPECT_EQ(error({spec("push_frontal", {{"max_push_distance", "-0.1"}})}),
+              "unit_scene.xml:17: push_frontal max_push_distance must be positive, got -0.100000");
+    EXPECT_EQ(error({spec("push_exterior", {{"approach_distance", "-1"}})}),
+              "unit_scene.xml:17: the approach distance must be at least 0, got -1.000000");
+    EXPECT_EQ(error({spec("push_exterior", {{"downward_tilt", "steep"}})}),
+              "unit_scene.xml:17: <push_exterior> parameter 'downward_tilt' must be an angle (radians, or "
+              "degrees as in 45deg), got 'steep'");
+    EXPECT_EQ(error({spec("push_interior", {{"push_length", "0.1"}})}),
+              "unit_scene.xml:17: unknown parameter 'push_length' for <push_interior>");
 }
