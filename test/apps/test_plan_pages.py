@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""The 3-D plan pages (--html) of ompl_mm_plan and ompl_phys_plan, loaded in headless Chromium: the page
-draws its first picture with no JavaScript error or warning, names the current segment, and its
-screenshots at the start and the middle of the timeline differ from each other and from a blank page.
+"""The 3-D plan pages (--html) of ompl_mm_plan (MOBILE BLOCKED, KUKA TABLE, KUKA CABINET) and
+ompl_phys_plan, loaded in headless Chromium: the page draws its first picture with no JavaScript
+error or warning, names the current segment, and its screenshots at the start and the middle of the
+timeline differ from each other and from a blank page.
 A MOBILE BLOCKED page stays under 2 MB. Needs Debian's chromium and python3-matplotlib (PNG reading).
 
 Prints "ok - name" / "not ok - name" per check, then "N passed, M failed"; exits 1 on any failure.
@@ -113,6 +114,14 @@ def main():
     size = os.path.getsize(arm_page) if os.path.isfile(arm_page) else 0
     checks.check(f"the KUKA TABLE page is under 2 MB ({size} bytes)", 0 < size < MAX_PAGE_BYTES)
     check_page(checks, "KUKA TABLE", arm_page, r"(transit|pickup cyl\d|transfer cyl\d) — [\d.]+ s of [\d.]+ s$", blank)
+
+    cabinet_page = os.path.join(args.scratch, "kuka_cabinet.html")
+    done = subprocess.run([args.mm_plan, os.path.join(args.scenes, "kuka_cabinet.xml"), "--seed", "1",
+                           "--html", cabinet_page], capture_output=True, text=True, timeout=300)
+    checks.check("ompl_mm_plan --html writes the KUKA CABINET page",
+                 done.returncode == 0 and os.path.isfile(cabinet_page), done.stderr)
+    check_page(checks, "KUKA CABINET", cabinet_page,
+               r"(transit|push cyl\d|pickup cyl\d|transfer cyl\d) — [\d.]+ s of [\d.]+ s$", blank)
 
     phys_page = os.path.join(args.scratch, "scene2.html")
     done = subprocess.run([args.phys_plan, os.path.join(args.scenes, "physics", "scene2.xml"), "--planner",

@@ -31,6 +31,6 @@ check() {
   done
 }
 
-check mopl mopl_table1_quick.cfg 20 time.png success.png metric_path_length_m.png primitives.png time_shares.png
+check mopl mopl_table1_quick.cfg 30 time.png success.png metric_path_length_m.png primitives.png time_shares.png
 check physics physics_quick.cfg 30 time.png success.png
 exit $failed
