@@ -24,6 +24,8 @@ namespace
     /** The tests push cyl3 away from the robot and to its left, at 45 degrees, which every hand
         reaches. */
     const double DIAGONAL = std::sqrt(0.5);
+    /** Propagations a test tries before it calls a push unreachable. */
+    constexpr unsigned int ATTEMPTS = 5;
     /** KUKA CABINET's longest push, metres. */
     constexpr double MAX_PUSH = 0.1;
 
@@ -57,6 +59,19 @@ namespace
             space_->setObjectPose(to_, CYL3, pose);
         }
 
+        /** Propagates the push from `from_` to `to_` into trajectory, trying a few times: the
+            scene's push has a small IK budget (5 restarts) and may miss a reachable pose. */
+        bool propagate(Trajectory &trajectory) const
+        {
+            for (unsigned int attempt = 0; attempt < ATTEMPTS; ++attempt)
+            {
+                trajectory.reset(from_);
+                if (push_->propagate(from_, to_, trajectory))
+                    return true;
+            }
+            return false;
+        }
+
         /** The motion validator of the setup. */
         const ManipulationMotionValidator &validator() const
         {
@@ -85,8 +100,7 @@ TEST_P(ArmPushTest, PushesAlongAStraightToolLineMovingOnlyItsObject)
     pushCyl3By(DIAGONAL * 0.08, DIAGONAL * 0.08);
     ASSERT_TRUE(push_->isUseful(from_, to_));
     Trajectory trajectory(space_);
-    trajectory.reset(from_);
-    ASSERT_TRUE(push_->propagate(from_, to_, trajectory));
+    ASSERT_TRUE(propagate(trajectory));
 
     const Eigen::Vector3d direction(DIAGONAL, DIAGONAL, 0.0);
     unsigned int pushes = 0;
@@ -144,16 +158,8 @@ TEST_P(ArmPushTest, PushesAtMostTheLongestPush)
 {
     ASSERT_NE(push_, nullptr);
     pushCyl3By(DIAGONAL * 0.25, DIAGONAL * 0.25);
-    // the inverse kinematics' random restarts may miss the 30 degrees of a longest push; some of
-    // a few tries do not
     Trajectory trajectory(space_);
-    bool pushed = false;
-    for (unsigned int attempt = 0; attempt < 5 && !pushed; ++attempt)
-    {
-        trajectory.reset(from_);
-        pushed = push_->propagate(from_, to_, trajectory);
-    }
-    ASSERT_TRUE(pushed);
+    ASSERT_TRUE(propagate(trajectory));
     const Eigen::Vector3d moved =
         space_->objectPosition(trajectory.back(), CYL3) - space_->objectPosition(from_, CYL3);
     EXPECT_NEAR(moved.x(), DIAGONAL * MAX_PUSH, 1e-9);
@@ -166,8 +172,7 @@ TEST_P(ArmPushTest, ExplainsOnlyPushesThatKeepTheHandPose)
     ASSERT_NE(push_, nullptr);
     pushCyl3By(DIAGONAL * 0.08, DIAGONAL * 0.08);
     Trajectory trajectory(space_);
-    trajectory.reset(from_);
-    ASSERT_TRUE(push_->propagate(from_, to_, trajectory));
+    ASSERT_TRUE(propagate(trajectory));
     std::size_t k = 0;
     while (trajectory.label(k).kind != PrimitiveKind::Push)
         ++k;
