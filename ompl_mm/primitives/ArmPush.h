@@ -12,10 +12,11 @@ namespace ompl_mm
         section IV-C: Push-Interior, Push-Exterior and Push-Frontal are this primitive with
         different hand poses). While pushing, the tool point keeps its push pose: `standoff` behind
         the object's axis against the push direction, `heightOffset` above the object's centre,
-        its approach axis (tool z) along the push direction tilted down by `downwardTilt`, the axis
-        between the fingers (tool x) in the vertical plane of the push, the whole hand turned by
-        `inwardTilt` about the world vertical and, when `turned`, by half a turn about its
-        approach axis (pushing with the other side of the hand). Each push moves the object at
+        its approach axis (tool z) along the push direction tilted down by `downwardTilt`, turned by
+        `handRoll` about that axis from where the axis between the fingers (tool x) lies level
+        across the push (fingers side by side, the hand's face, tool y, towards the object; a half
+        turn pushes with the back of the hand), and the whole hand turned by `inwardTilt` about the
+        world vertical. Each push moves the object at
         most `maxPushDistance`; full 6-D inverse kinematics places the hand at the push's start
         and end, and the joint-space motion between them, split where needed, keeps the tool
         within LINE_TOLERANCE of the straight push line at every step of the connect resolution,
@@ -31,7 +32,7 @@ namespace ompl_mm
             double heightOffset{0.0};             ///< tool point height above the object's centre, metres
             double inwardTilt{0.0};               ///< turn of the hand about the world vertical, radians
             double downwardTilt{0.0};             ///< approach axis below the horizontal, radians
-            bool turned{false};                   ///< hand turned half a turn about its approach axis
+            double handRoll{0.0};                 ///< turn of the hand about its approach axis, radians
             double maxPushDistance{0.1};          ///< longest push, metres
             double maxPushJointDistance{0.5236};  ///< longest joint-space motion of a push, radians
             double approachDistance{0.05};  ///< height of the approach and length of the retreat, metres

@@ -39,10 +39,10 @@ namespace ompl_mm
                                                        centre + settings_.heightOffset));
         tool.rotate(Eigen::AngleAxisd(std::atan2(direction.y(), direction.x()) + settings_.inwardTilt,
                                       Eigen::Vector3d::UnitZ()));
-        // the approach axis (tool z) from the push direction (x) down by the downward tilt
+        // the approach axis (tool z) from the push direction (x) down by the downward tilt, the
+        // fingers' axis (tool x) level across the push before the roll
         tool.rotate(Eigen::AngleAxisd(0.5 * M_PI + settings_.downwardTilt, Eigen::Vector3d::UnitY()));
-        if (settings_.turned)
-            tool.rotate(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ()));
+        tool.rotate(Eigen::AngleAxisd(0.5 * M_PI + settings_.handRoll, Eigen::Vector3d::UnitZ()));
         return tool;
     }
 

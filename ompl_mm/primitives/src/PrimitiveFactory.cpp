@@ -49,6 +49,7 @@ namespace ompl_mm
                 settings.heightOffset = params.number("height_offset", settings.heightOffset);
                 settings.inwardTilt = params.angle("inward_tilt", settings.inwardTilt);
                 settings.downwardTilt = params.angle("downward_tilt", settings.downwardTilt);
+                settings.handRoll = params.angle("hand_roll", settings.handRoll);
                 settings.maxPushDistance = params.number("max_push_distance", settings.maxPushDistance);
                 settings.maxPushJointDistance =
                     params.angle("max_push_joint_distance", settings.maxPushJointDistance);
@@ -57,13 +58,13 @@ namespace ompl_mm
             };
         }
 
-        /** The hand of a push with its given tilts, turned or not. */
-        ArmPush::Settings hand(double inwardDegrees, double downwardDegrees, bool turned)
+        /** The hand of a push with its given tilts and roll. */
+        ArmPush::Settings hand(double inwardDegrees, double downwardDegrees, double rollDegrees)
         {
             ArmPush::Settings settings;
             settings.inwardTilt = inwardDegrees * M_PI / 180.0;
             settings.downwardTilt = downwardDegrees * M_PI / 180.0;
-            settings.turned = turned;
+            settings.handRoll = rollDegrees * M_PI / 180.0;
             return settings;
         }
     }  // namespace
@@ -161,9 +162,9 @@ namespace ompl_mm
         registerType("push_mobile", [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
                      { return std::make_shared<PushMobile>(space, params.optionalNumber("standoff")); });
         // the hands of the MOPL paper's KUKA scenes
-        registerType("push_interior", armPush("push_interior", hand(0.0, 65.0, false)));
-        registerType("push_exterior", armPush("push_exterior", hand(0.0, 65.0, true)));
-        registerType("push_frontal", armPush("push_frontal", hand(30.0, 0.0, false)));
+        registerType("push_interior", armPush("push_interior", hand(0.0, 65.0, 0.0)));
+        registerType("push_exterior", armPush("push_exterior", hand(0.0, 65.0, 180.0)));
+        registerType("push_frontal", armPush("push_frontal", hand(30.0, 0.0, 0.0)));
         registerType("pickup",
                      [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
                      {

@@ -216,6 +216,7 @@ TEST_F(Factory, ArmPushesReadTheirHandAndLimits)
                                                {"height_offset", "-0.01"},
                                                {"downward_tilt", "40deg"},
                                                {"inward_tilt", "-15deg"},
+                                               {"hand_roll", "90deg"},
                                                {"max_push_distance", "0.05"},
                                                {"max_push_joint_distance", "20deg"},
                                                {"approach_distance", "0"}}),
@@ -231,8 +232,8 @@ TEST_F(Factory, ArmPushesReadTheirHandAndLimits)
     // the defaults: the hands of the KUKA scenes
     EXPECT_DOUBLE_EQ(interior->settings().standoff, 0.14);
     EXPECT_NEAR(interior->settings().downwardTilt, 65.0 * M_PI / 180.0, 1e-12);
-    EXPECT_FALSE(interior->settings().turned);
-    EXPECT_TRUE(exterior->settings().turned);
+    EXPECT_DOUBLE_EQ(interior->settings().handRoll, 0.0);
+    EXPECT_NEAR(frontal->settings().handRoll, 0.0, 1e-12);
     EXPECT_NEAR(frontal->settings().inwardTilt, 30.0 * M_PI / 180.0, 1e-12);
     EXPECT_DOUBLE_EQ(frontal->settings().downwardTilt, 0.0);
     EXPECT_DOUBLE_EQ(interior->settings().maxPushDistance, 0.1);
@@ -242,6 +243,7 @@ TEST_F(Factory, ArmPushesReadTheirHandAndLimits)
     EXPECT_DOUBLE_EQ(exterior->settings().heightOffset, -0.01);
     EXPECT_NEAR(exterior->settings().downwardTilt, 40.0 * M_PI / 180.0, 1e-12);
     EXPECT_NEAR(exterior->settings().inwardTilt, -15.0 * M_PI / 180.0, 1e-12);
+    EXPECT_NEAR(exterior->settings().handRoll, 0.5 * M_PI, 1e-12);
     EXPECT_DOUBLE_EQ(exterior->settings().maxPushDistance, 0.05);
     EXPECT_NEAR(exterior->settings().maxPushJointDistance, 20.0 * M_PI / 180.0, 1e-12);
     EXPECT_DOUBLE_EQ(exterior->settings().approachDistance, 0.0);
