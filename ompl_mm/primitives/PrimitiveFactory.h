@@ -39,6 +39,9 @@ namespace ompl_mm
                            unsigned int high) const;
         /** A parameter's text, which counts as read; `fallback` when absent. */
         std::string text(const std::string &name, const std::string &fallback) const;
+        /** A parameter that is true or false (also 1 or 0); `fallback` when absent.
+            @throws ompl_core::InputError naming the line when it is anything else. */
+        bool flag(const std::string &name, bool fallback) const;
 
         /** Makes the inverse kinematics solvers of the primitives built (empty: IkSolver). */
         const InverseKinematicsFactory &inverseKinematics() const { return inverseKinematics_; }

@@ -21,7 +21,7 @@ namespace ompl_mm
         within the limits, at most `restarts` times and within `timeLimit`. Deterministic for a
         given random generator state. Holds its own work space, so the hot path allocates nothing;
         use one solver per thread. Its parameters are declared (params()): ik_tolerance,
-        ik_iterations, ik_restarts, ik_damping, ik_time_limit. */
+        ik_iterations, ik_restarts, ik_damping, ik_time_limit, ik_any_yaw. */
     class IkSolver : public InverseKinematics
     {
     public:
@@ -29,8 +29,9 @@ namespace ompl_mm
         IkSolver(KinematicChain chain, const Eigen::Isometry3d &base);
 
         /** The task error of the chain's values in q: position and rotation error vector (world
-            frame; radians about each axis), the rotation about the world vertical left out for
-            Pose5DFreeYaw and the rotation for Position3D. */
+            frame; radians about each axis), for Pose5DFreeYaw without the rotation about the
+            world vertical (and, with anyYaw, measured against the target turned about the vertical
+            to the chain's nearest yaw), for Position3D without the rotation. */
         double error(const Eigen::Isometry3d &target, IkTask task, const double *q) const;
 
         /** InverseKinematics' hook: the chain solved for. */
@@ -53,9 +54,16 @@ namespace ompl_mm
         double postureGain{0.05};
         /** Seconds a solve may take; infinite by default. */
         double timeLimit{1e300};
+        /** How Pose5DFreeYaw treats the free yaw. False (the default): the error keeps the
+            target's yaw, whose pull on the other axes favours solutions near it but makes an
+            attempt diverge that starts more than about a quarter turn away; restarts then find a
+            solution near the target's yaw. True: the error is measured against the target turned
+            to the yaw nearest to the chain's, so an attempt converges to whatever yaw is nearest
+            to where it starts (arms that must reach round, or grasp from any side). */
+        bool anyYaw{false};
 
         /** The declared parameters (OMPL's ParamSet): ik_tolerance, ik_iterations, ik_restarts,
-            ik_damping, ik_time_limit, with their ranges. */
+            ik_damping, ik_time_limit, ik_any_yaw, with their ranges. */
         ompl::base::ParamSet &params() { return params_; }
 
         /** Iterations the last solve() took, over all attempts. */
@@ -71,8 +79,8 @@ namespace ompl_mm
         using Vector6d = Eigen::Matrix<double, 6, 1>;
 
         /** The 6-vector error (position, rotation) of tool pose current, masked for task. */
-        static Vector6d taskError(const Eigen::Isometry3d &target, const Eigen::Isometry3d &current,
-                                  IkTask task);
+        Vector6d taskError(const Eigen::Isometry3d &target, const Eigen::Isometry3d &current,
+                           IkTask task) const;
 
         /** One attempt from the chain's values in work_; true when it converged. */
         bool attempt(const Eigen::Isometry3d &target, IkTask task,

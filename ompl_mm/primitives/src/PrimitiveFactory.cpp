@@ -27,13 +27,16 @@ namespace ompl_mm
             settings.approachDistance = params.number("approach_distance", settings.approachDistance);
             const unsigned int iterations = params.count("ik_iterations", 20, 1, 10000);
             const unsigned int restarts = params.count("ik_restarts", 20, 0, 100000);
+            const bool anyYaw = params.flag("ik_any_yaw", false);
             InverseKinematicsFactory factory = params.inverseKinematics();
             if (!factory)
-                factory = [iterations, restarts](const KinematicChain &chain, const Eigen::Isometry3d &base)
+                factory =
+                    [iterations, restarts, anyYaw](const KinematicChain &chain, const Eigen::Isometry3d &base)
                 {
                     auto solver = std::make_unique<IkSolver>(chain, base);
                     solver->iterations = iterations;
                     solver->restarts = restarts;
+                    solver->anyYaw = anyYaw;
                     return std::unique_ptr<InverseKinematics>(std::move(solver));
                 };
             return std::make_shared<Grasping>(space, settings, factory);
@@ -102,6 +105,17 @@ namespace ompl_mm
                                                          std::to_string(low) + ", " + std::to_string(high) +
                                                          "], got '" + spec_.params.at(name) + "'");
         return static_cast<unsigned int>(*value);
+    }
+
+    bool PrimitiveParameters::flag(const std::string &name, bool fallback) const
+    {
+        const std::string value = text(name, fallback ? "true" : "false");
+        if (value == "true" || value == "1")
+            return true;
+        if (value == "false" || value == "0")
+            return false;
+        throw ompl_core::InputError(spec_.where, "<" + spec_.type + "> parameter '" + name +
+                                                     "' must be true or false, got '" + value + "'");
     }
 
     std::string PrimitiveParameters::text(const std::string &name, const std::string &fallback) const

@@ -1,6 +1,5 @@
 #include "ompl_mm/robot/IkSolver.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace ompl_mm
@@ -43,14 +42,27 @@ namespace ompl_mm
         params_.declareParam<double>(
             "ik_time_limit", [this](double v) { timeLimit = v; }, [this] { return timeLimit; });
         params_["ik_time_limit"].setRangeSuggestion("0.:0.001:1e300");
+        params_.declareParam<bool>(
+            "ik_any_yaw", [this](bool v) { anyYaw = v; }, [this] { return anyYaw; });
+        params_["ik_any_yaw"].setRangeSuggestion("0,1");
     }
 
     IkSolver::Vector6d IkSolver::taskError(const Eigen::Isometry3d &target, const Eigen::Isometry3d &current,
-                                           IkTask task)
+                                           IkTask task) const
     {
         Vector6d error;
         error.head<3>() = target.translation() - current.translation();
-        const Eigen::AngleAxisd rotation(target.linear() * current.linear().transpose());
+        Eigen::Matrix3d difference = target.linear() * current.linear().transpose();
+        if (task == IkTask::Pose5DFreeYaw && anyYaw)
+        {
+            // the target turned about the vertical to the yaw nearest to the current orientation
+            // (the turn that maximises the trace of the difference): what is left no turn about the
+            // vertical can remove, and it pulls nowhere about the vertical
+            const double nearest =
+                std::atan2(difference(0, 1) - difference(1, 0), difference(0, 0) + difference(1, 1));
+            difference = Eigen::AngleAxisd(nearest, Eigen::Vector3d::UnitZ()).toRotationMatrix() * difference;
+        }
+        const Eigen::AngleAxisd rotation(difference);
         error.tail<3>() = rotation.angle() * rotation.axis();
         if (task == IkTask::Pose5DFreeYaw)
             error[5] = 0.0;  // a residual rotation about the vertical is allowed

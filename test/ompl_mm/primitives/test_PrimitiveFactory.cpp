@@ -260,6 +260,8 @@ TEST_F(Factory, ArmPushErrorsNameTheLine)
     EXPECT_EQ(error({spec("push_exterior", {{"downward_tilt", "steep"}})}),
               "unit_scene.xml:17: <push_exterior> parameter 'downward_tilt' must be an angle (radians, or "
               "degrees as in 45deg), got 'steep'");
+    EXPECT_EQ(error({spec("push_interior", {{"ik_any_yaw", "yes"}})}),
+              "unit_scene.xml:17: <push_interior> parameter 'ik_any_yaw' must be true or false, got 'yes'");
     EXPECT_EQ(error({spec("push_interior", {{"push_length", "0.1"}})}),
               "unit_scene.xml:17: unknown parameter 'push_length' for <push_interior>");
 }

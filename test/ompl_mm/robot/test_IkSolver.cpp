@@ -1,14 +1,15 @@
 // Tests for IkSolver on the KUKA LWR-like arm: full 6-D IK of 2,000 random reachable poses from the
 // middle of the joint ranges (every answer within the limits and 1e-5 of its target, at least 99.9 %
-// solved, bounded by iterations), the 5-D task with the yaw free and the 3-D task, determinism, an
-// unreachable target leaving the joints as they were, solves from the seed alone (NearSeed), and the
-// declared parameters.
+// solved, bounded by iterations), the 5-D task with the yaw free (whatever the target's yaw) and the
+// 3-D task, determinism, an unreachable target leaving the joints as they were, solves from the seed
+// alone (NearSeed), and the declared parameters.
 #include "ompl_mm/robot/IkSolver.h"
 
 #include "common/InputErrors.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -103,6 +104,33 @@ TEST_F(LwrIk, FiveDimensionalTaskLeavesOnlyTheYawAboutTheVerticalFree)
     }
 }
 
+TEST_F(LwrIk, FiveDimensionalTaskWithAnyYawConvergesWhateverTheTargetsYaw)
+{
+    // targets whose yaw lies far (2.5 to 3.1 rad) from a solution's, solved from near that
+    // solution alone: with anyYaw the yaw the task leaves free must not pull the solver away
+    solver_.anyYaw = true;
+    ompl::RNG poses(23), restarts(24);
+    unsigned int solved = 0;
+    const unsigned int count = 100;
+    for (unsigned int k = 0; k < count; ++k)
+    {
+        const std::vector<double> solution = random(poses);
+        const Eigen::Isometry3d reachable = chain().toolPose(solution.data(), base_);
+        const Eigen::Isometry3d target =
+            Eigen::Translation3d(reachable.translation()) *
+            Eigen::AngleAxisd(poses.uniformReal(2.5, 3.1), Eigen::Vector3d::UnitZ()) *
+            Eigen::Translation3d(-reachable.translation()) * reachable;
+        std::vector<double> q = solution;
+        for (unsigned int i = 0; i < chain().size(); ++i)
+            q[chain().variable(i)] = std::clamp(q[chain().variable(i)] + poses.uniformReal(-0.1, 0.1),
+                                                chain().lower(i), chain().upper(i));
+        if (solver_.solve(target, IkTask::Pose5DFreeYaw, q.data(), restarts, IkScope::NearSeed))
+            ++solved;
+    }
+    // 91 of these 100 converge (3 without anyYaw, whose error keeps the target's own yaw)
+    EXPECT_GE(solved, 85u) << "of " << count;
+}
+
 TEST_F(LwrIk, PositionTaskReachesThePointWhateverTheOrientation)
 {
     ompl::RNG restarts(31);
@@ -169,6 +197,10 @@ TEST_F(LwrIk, ParametersAreDeclaredWithRanges)
     EXPECT_EQ(solver_.damping, 0.05);
     EXPECT_TRUE(params.setParam("ik_time_limit", "0.002"));
     EXPECT_EQ(solver_.timeLimit, 0.002);
-    for (const char *name : {"ik_tolerance", "ik_iterations", "ik_restarts", "ik_damping", "ik_time_limit"})
+    EXPECT_FALSE(solver_.anyYaw);
+    EXPECT_TRUE(params.setParam("ik_any_yaw", "1"));
+    EXPECT_TRUE(solver_.anyYaw);
+    for (const char *name :
+         {"ik_tolerance", "ik_iterations", "ik_restarts", "ik_damping", "ik_time_limit", "ik_any_yaw"})
         EXPECT_FALSE(params.getParam(name)->getRangeSuggestion().empty()) << name;
 }
