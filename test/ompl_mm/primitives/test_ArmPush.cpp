@@ -1,4 +1,4 @@
-// Tests for ArmPush, on KUKA CABINET's three push primitives.
+// Tests for ArmPush, on KUKA CABINET's three push primitives and MEKA CLEAN-UP's bottle1.
 #include "ompl_mm/primitives/ArmPush.h"
 
 #include "ompl_core/run/GlobalSeed.h"
@@ -225,4 +225,56 @@ TEST(ArmPushSettings, RejectsDistancesThatAreNotPositive)
     EXPECT_THROW(ArmPush(space, "push", arm, settings), ompl::Exception);
     settings.approachDistance = 0.0;
     EXPECT_NO_THROW(ArmPush(space, "push", arm, settings));
+}
+
+TEST(ArmPushOnMeka, PushesBottle1ToItsGoalAlongAStraightLine)
+{
+    // MEKA CLEAN-UP's bottle1 moves 0.058 m on the lower level: one push with the flat of the hand
+    ompl_core::reseedOmpl(1);
+    ManipulationSetup setup(loadScene(OMPL_MM_SCENES_DIR "/meka_cleanup.xml"));
+    const ManipulationStateSpace *space = setup.manipulationSpace().get();
+    const unsigned int bottle1 = 0;
+    ob::State *from = space->cloneState(setup.getProblemDefinition()->getStartState(0));
+    ob::State *to = space->cloneState(from);
+    ObjectPose goal = space->objectPose(from, bottle1);
+    goal.position.head<2>() = Eigen::Vector2d(0.13, -0.3);
+    space->setObjectPose(to, bottle1, goal);
+    Trajectory trajectory(space);
+    bool pushed = false;
+    for (const PrimitivePtr &primitive : setup.primitives())
+        for (unsigned int attempt = 0;
+             attempt < ATTEMPTS && !pushed && primitive->kind() == PrimitiveKind::Push; ++attempt)
+        {
+            trajectory.reset(from);
+            pushed = primitive->propagate(from, to, trajectory);
+        }
+    ASSERT_TRUE(pushed);
+    EXPECT_LE((space->objectPosition(trajectory.back(), bottle1) - goal.position).norm(), 1e-9);
+    const auto &validator =
+        static_cast<const ManipulationMotionValidator &>(*setup.getSpaceInformation()->getMotionValidator());
+    unsigned int pushes = 0;
+    for (std::size_t k = 0; k + 1 < trajectory.size(); ++k)
+    {
+        if (trajectory.label(k).kind != PrimitiveKind::Push)
+            continue;
+        ++pushes;
+        const ob::State *a = trajectory.state(k);
+        const ob::State *b = trajectory.state(k + 1);
+        EXPECT_TRUE(validator.checkMotion(a, b)) << "segment " << k;
+        ASSERT_TRUE(validator.explain(a, b).has_value());
+        // the tool keeps its offset from the bottle within twice the line tolerance
+        const Eigen::Vector3d offset = space->toolPosition(a) - space->objectPosition(a, bottle1);
+        ob::State *between = space->allocState();
+        for (unsigned int s = 0; s <= SAMPLES; ++s)
+        {
+            space->interpolate(a, b, static_cast<double>(s) / SAMPLES, between);
+            EXPECT_LE(
+                (space->toolPosition(between) - space->objectPosition(between, bottle1) - offset).norm(),
+                2.0 * ArmPush::LINE_TOLERANCE);
+        }
+        space->freeState(between);
+    }
+    EXPECT_GE(pushes, 1u);
+    space->freeState(from);
+    space->freeState(to);
 }
