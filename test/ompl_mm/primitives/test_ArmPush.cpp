@@ -199,6 +199,20 @@ TEST_P(ArmPushTest, ExplainsOnlyPushesThatKeepTheHandPose)
     pose.position.z() += 0.01;
     space_->setObjectPose(off, CYL3, pose);
     EXPECT_FALSE(push_->explain(a, off).has_value());
+    // the hand at its push pose at both ends, but reaching the end on another IK branch: the
+    // joint motion between them swings the tool far off the line
+    space_->copyState(off, b);
+    Grasping arm(space_, Grasping::Settings{}, InverseKinematicsFactory());
+    const Eigen::Isometry3d end = space_->model()->toolFrame(space_->robotValues(b));
+    bool otherBranch = false;
+    for (unsigned int attempt = 0; attempt < 50 && !otherBranch; ++attempt)
+    {
+        arm.randomizeChain(space_->robotValues(off));
+        otherBranch = arm.solveToolPose(end, space_->robotValues(off)) &&
+                      arm.jointDistance(space_->robotValues(off), space_->robotValues(b)) > 2.0;
+    }
+    ASSERT_TRUE(otherBranch);
+    EXPECT_FALSE(push_->explain(a, off).has_value()) << "only the ends keep the push pose";
     space_->freeState(off);
     space_->freeState(a);
     space_->freeState(b);
