@@ -87,6 +87,14 @@ namespace ompl_mm
                            const Eigen::Vector2d &direction) const;
         /** True when the tool point's frame at joints q is within the tolerances of pose. */
         bool near(const double *q, const Eigen::Isometry3d &pose) const;
+        /** Finds, with the push's inverse kinematics, the joints of the push from `start` to `end`
+            (the object pushed in direction; the rest of the world as in `from`): joints[0] at the
+            push start, [1] approachDistance above it, [2] at the push end, [3] backed away from
+            it, the approach nearest to from's joints, every state acceptable. scratch is a state
+            to work in. False when none of Grasping::ATTEMPTS solutions has them all. */
+        bool solvePush(const ompl::base::State *from, unsigned int object, const ObjectPose &start,
+                       const ObjectPose &end, const Eigen::Vector2d &direction, ompl::base::State *scratch,
+                       Grasping::Solution &joints) const;
         /** Appends push segments from trajectory.back() to `end` (the object pushed there in
             direction): one when the tool keeps its push pose, else two halves through the push
             pose halfway, found by inverse kinematics near the joints' midpoint, each again split at

@@ -99,34 +99,22 @@ namespace ompl_mm
         return split;
     }
 
-    bool ArmPush::propagate(const ompl::base::State *from, const ompl::base::State *to,
-                            Trajectory &trajectory) const
+    bool ArmPush::solvePush(const ompl::base::State *from, unsigned int object, const ObjectPose &start,
+                            const ObjectPose &end, const Eigen::Vector2d &direction,
+                            ompl::base::State *scratch, Grasping::Solution &joints) const
     {
-        const int object = nearestToTool(from, [&](unsigned int i) { return slides(from, to, i); });
-        if (object < 0)
-            return false;
-        const ObjectPose start = space_->objectPose(from, object);
-        const Eigen::Vector2d offset = (space_->objectPosition(to, object) - start.position).head<2>();
-        const Eigen::Vector2d direction = offset.normalized();
-        ObjectPose end = start;
-        end.position.head<2>() += std::min(offset.norm(), settings_.maxPushDistance) * direction;
         const Eigen::Vector3d up(0.0, 0.0, settings_.approachDistance);
         const Eigen::Vector3d back(-settings_.approachDistance * direction.x(),
                                    -settings_.approachDistance * direction.y(), 0.0);
         const Eigen::Vector3d none = Eigen::Vector3d::Zero();
-
-        // the push's start and end, the approach from above and the retreat backwards, the
-        // approach nearest to where the robot is
-        ompl::base::State *waypoint = space_->cloneState(from);
         // the state with the robot at q and the object at pose is acceptable
         const auto acceptableAt = [&](const std::vector<double> &q, const ObjectPose &pose)
         {
-            std::copy(q.begin(), q.end(), space_->robotValues(waypoint));
-            space_->setObjectPose(waypoint, object, pose);
-            return acceptable(waypoint);
+            std::copy(q.begin(), q.end(), space_->robotValues(scratch));
+            space_->setObjectPose(scratch, object, pose);
+            return acceptable(scratch);
         };
-        Grasping::Solution joints;
-        const bool found = arm_->nearestSolution(
+        return arm_->nearestSolution(
             space_->robotValues(from), 1, joints,
             [&](Grasping::Solution &s)
             {
@@ -142,7 +130,22 @@ namespace ompl_mm
                 s[3] = s[2];
                 return arm_->solveShortMove(back, none, s[3].data()) && acceptableAt(s[3], end);
             });
-        if (!found)
+    }
+
+    bool ArmPush::propagate(const ompl::base::State *from, const ompl::base::State *to,
+                            Trajectory &trajectory) const
+    {
+        const int object = nearestToTool(from, [&](unsigned int i) { return slides(from, to, i); });
+        if (object < 0)
+            return false;
+        const ObjectPose start = space_->objectPose(from, object);
+        const Eigen::Vector2d offset = (space_->objectPosition(to, object) - start.position).head<2>();
+        const Eigen::Vector2d direction = offset.normalized();
+        ObjectPose end = start;
+        end.position.head<2>() += std::min(offset.norm(), settings_.maxPushDistance) * direction;
+        ompl::base::State *waypoint = space_->cloneState(from);
+        Grasping::Solution joints;
+        if (!solvePush(from, object, start, end, direction, waypoint, joints))
         {
             space_->freeState(waypoint);
             return false;
