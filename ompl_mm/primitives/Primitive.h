@@ -70,9 +70,12 @@ namespace ompl_mm
             several could be (MOPL's rule). */
         int nearestToTool(const ompl::base::State *state,
                           const std::function<bool(unsigned int)> &qualifies) const;
-        /** True when the object slides on its surface from a to b: it moves in x, y only (its
-            height the same within 1e-9 m), as a push moves it. */
-        bool slides(const ompl::base::State *a, const ompl::base::State *b, unsigned int object) const;
+        /** True when a push could go from a to b: every object rests in both and some object
+            slides between them (moves in x, y only, as a push moves it). */
+        bool pushable(const ompl::base::State *a, const ompl::base::State *b) const;
+        /** Of the objects that slide from a to b, the one nearest to the tool in a (the object a
+            push acts on), or -1 when none slides. */
+        int nearestSlidingObject(const ompl::base::State *a, const ompl::base::State *b) const;
         /** The object a push from a to b moves: every object rests at both ends, exactly one moves,
             and it slides (slides()) keeping its yaw; -1 when that is not so. */
         int onlySlidingObject(const ompl::base::State *a, const ompl::base::State *b) const;
@@ -86,6 +89,10 @@ namespace ompl_mm
         const ManipulationStateSpace *space_;  ///< the space the primitive plans in, not owned
 
     private:
+        /** True when the object slides on its surface from a to b: it moves in x, y only (its
+            height the same within 1e-9 m), as a push moves it. */
+        bool slides(const ompl::base::State *a, const ompl::base::State *b, unsigned int object) const;
+
         std::string name_;
         PrimitiveKind kind_;
         ompl::base::StateValidityCheckerPtr checker_;

@@ -57,6 +57,17 @@ namespace ompl_mm
         return std::abs(pa.z() - pb.z()) < SAME && (pa - pb).head<2>().norm() > SAME;
     }
 
+    bool Primitive::pushable(const ompl::base::State *a, const ompl::base::State *b) const
+    {
+        return allObjectsRest(a) && allObjectsRest(b) &&
+               anyObject([&](unsigned int i) { return slides(a, b, i); });
+    }
+
+    int Primitive::nearestSlidingObject(const ompl::base::State *a, const ompl::base::State *b) const
+    {
+        return nearestToTool(a, [&](unsigned int i) { return slides(a, b, i); });
+    }
+
     int Primitive::onlySlidingObject(const ompl::base::State *a, const ompl::base::State *b) const
     {
         if (!allObjectsRest(a) || !allObjectsRest(b))

@@ -45,14 +45,13 @@ namespace ompl_mm
 
     bool PushMobile::isUseful(const ompl::base::State *from, const ompl::base::State *to) const
     {
-        return allObjectsRest(from) && allObjectsRest(to) &&
-               anyObject([&](unsigned int i) { return slides(from, to, i); });
+        return pushable(from, to);
     }
 
     bool PushMobile::propagate(const ompl::base::State *from, const ompl::base::State *to,
                                Trajectory &trajectory) const
     {
-        const int object = nearestToTool(from, [&](unsigned int i) { return slides(from, to, i); });
+        const int object = nearestSlidingObject(from, to);
         if (object < 0)
             return false;
         const ObjectPose start = space_->objectPose(from, object);

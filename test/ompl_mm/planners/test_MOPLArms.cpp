@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -130,6 +131,21 @@ namespace
             EXPECT_LE(std::abs(space.robotValues(end)[j]), scene.robotGoal.tolerance);
     }
 
+    /** The scene's setup made with OMPL seeded by seed, MOPL seeded by it too. */
+    std::unique_ptr<ManipulationSetup> seededSetup(const Scene &scene, unsigned int seed)
+    {
+        ompl_core::reseedOmpl(seed);
+        auto setup = std::make_unique<ManipulationSetup>(scene);
+        setup->mopl()->setSeed(seed);
+        return setup;
+    }
+
+    /** Solves within MAX_ITERATIONS. */
+    ompl::base::PlannerStatus solveBounded(ManipulationSetup &setup)
+    {
+        return setup.solve(ompl::base::IterationTerminationCondition(MAX_ITERATIONS));
+    }
+
     class MOPLOnKukaTable : public ::testing::TestWithParam<unsigned int>
     {
     protected:
@@ -140,11 +156,9 @@ namespace
 TEST_P(MOPLOnKukaTable, SolvesAndSolutionPassesTheRecheck)
 {
     const Scene scene = kukaTable();
-    ompl_core::reseedOmpl(GetParam());
-    ManipulationSetup setup(scene);
-    setup.mopl()->setSeed(GetParam());
-    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(MAX_ITERATIONS)),
-              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const std::unique_ptr<ManipulationSetup> solved = seededSetup(scene, GetParam());
+    ManipulationSetup &setup = *solved;
+    ASSERT_EQ(solveBounded(setup), ompl::base::PlannerStatus::EXACT_SOLUTION);
     const ManipulationPath &path = setup.manipulationPath();
     EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
     EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
@@ -161,11 +175,9 @@ TEST(MOPLOnKukaCabinet, SolvesWithPushesIntoTheCabinetAndPassesTheRecheck)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     const Scene scene = loadScene(OMPL_MM_SCENES_DIR "/kuka_cabinet.xml");
-    ompl_core::reseedOmpl(1);
-    ManipulationSetup setup(scene);
-    setup.mopl()->setSeed(1);
-    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(MAX_ITERATIONS)),
-              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const std::unique_ptr<ManipulationSetup> solved = seededSetup(scene, 1);
+    ManipulationSetup &setup = *solved;
+    ASSERT_EQ(solveBounded(setup), ompl::base::PlannerStatus::EXACT_SOLUTION);
     const ManipulationPath &path = setup.manipulationPath();
     EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
     EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
@@ -186,11 +198,9 @@ TEST(MOPLOnKukaTable, SameSeedGivesSamePath)
     std::vector<std::vector<double>> paths;
     for (int run = 0; run < 2; ++run)
     {
-        ompl_core::reseedOmpl(4);
-        ManipulationSetup setup(scene);
-        setup.mopl()->setSeed(4);
-        ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(MAX_ITERATIONS)),
-                  ompl::base::PlannerStatus::EXACT_SOLUTION);
+        const std::unique_ptr<ManipulationSetup> solved = seededSetup(scene, 4);
+        ManipulationSetup &setup = *solved;
+        ASSERT_EQ(solveBounded(setup), ompl::base::PlannerStatus::EXACT_SOLUTION);
         const ManipulationPath &path = setup.manipulationPath();
         std::vector<double> values;
         for (std::size_t i = 0; i < path.getStateCount(); ++i)
