@@ -191,7 +191,10 @@ namespace ompl_mm
                      });
         registerType("transfer_rigid",
                      [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
-                     { return std::make_shared<TransferRigid>(space, makeGrasping(space, params, 0.0)); });
+                     {
+                         return std::make_shared<TransferRigid>(space, makeGrasping(space, params, 0.0),
+                                                                params.number("place_height", 0.0));
+                     });
     }
 
     void PrimitiveFactory::registerType(const std::string &type, Builder builder)

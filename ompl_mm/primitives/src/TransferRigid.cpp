@@ -1,12 +1,22 @@
 #include "ompl_mm/primitives/TransferRigid.h"
 
+#include <ompl/util/Exception.h>
+
+#include <cmath>
+#include <string>
 #include <vector>
 
 namespace ompl_mm
 {
-    TransferRigid::TransferRigid(const ManipulationStateSpace *space, std::shared_ptr<Grasping> grasping)
-        : Primitive(space, "transfer_rigid", PrimitiveKind::Transfer), grasping_(std::move(grasping))
+    TransferRigid::TransferRigid(const ManipulationStateSpace *space, std::shared_ptr<Grasping> grasping,
+                                 double placeHeight)
+        : Primitive(space, "transfer_rigid", PrimitiveKind::Transfer),
+          grasping_(std::move(grasping)),
+          placeHeight_(placeHeight)
     {
+        if (!(placeHeight_ >= 0.0) || !std::isfinite(placeHeight_))
+            throw ompl::Exception("transfer_rigid place_height must be at least 0, got " +
+                                  std::to_string(placeHeight_));
     }
 
     int TransferRigid::heldObject(const ompl::base::State *state) const
@@ -40,28 +50,18 @@ namespace ompl_mm
             model.toolFrame(space_->robotValues(from)).inverse() * Grasping::objectFrame(held);
         const unsigned int n = space_->robotDimension();
         const double *start = space_->robotValues(from);
-        std::vector<double> placeJoints(start, start + n);
-        std::vector<double> retreatJoints;
+        std::vector<double> placeJoints;
+        Grasping::Solution joints;
         const bool places = space_->restingSurface(to, object) >= 0;
         if (places)
         {
             // a place the tool can retreat from along its axis, near the robot's joints
-            Grasping::Solution joints;
-            const bool found = grasping_->nearestSolution(
-                start, 0, joints,
-                [&](Grasping::Solution &s)
-                {
-                    if (!grasping_->solveCarry(grasp, {target.position, held.yaw}, s[0].data()))
-                        return false;
-                    s.resize(2, s[0]);
-                    return grasping_->solveShortMove(Eigen::Vector3d::Zero(),
-                                                     {0.0, 0.0, -grasping_->settings().approachDistance},
-                                                     s[1].data());
-                });
-            if (!found)
+            if (!grasping_->nearestSolution(start, 0, joints,
+                                            [&](Grasping::Solution &s) {
+                                                return solvePlace(grasp, {target.position, held.yaw}, s);
+                                            }))
                 return false;
-            placeJoints.swap(joints[0]);
-            retreatJoints.swap(joints[1]);
+            placeJoints = joints[0];
         }
         else
             placeJoints.assign(space_->robotValues(to), space_->robotValues(to) + n);
@@ -74,16 +74,50 @@ namespace ompl_mm
         else if (places)
             return false;  // a place that misses is no place
         ompl::base::State *waypoint = space_->cloneState(from);
+        if (joints.size() > 2)
+        {
+            const std::vector<double> &above = joints[2];
+            std::copy(above.begin(), above.end(), space_->robotValues(waypoint));
+            space_->setObjectPose(
+                waypoint, object,
+                grasping_->heldPose(object, model.toolFrame(above.data()), grasp, target.yaw));
+            trajectory.append(waypoint, {PrimitiveKind::Transfer, object});
+        }
         std::copy(placeJoints.begin(), placeJoints.end(), space_->robotValues(waypoint));
         space_->setObjectPose(waypoint, object, carried);
         trajectory.append(waypoint, {PrimitiveKind::Transfer, object});
         if (places)
         {
-            std::copy(retreatJoints.begin(), retreatJoints.end(), space_->robotValues(waypoint));
+            std::copy(joints[1].begin(), joints[1].end(), space_->robotValues(waypoint));
             trajectory.append(waypoint, {PrimitiveKind::Transit, -1});
         }
         space_->freeState(waypoint);
         return true;
+    }
+
+    bool TransferRigid::solvePlace(const Eigen::Isometry3d &grasp, const ObjectPose &place,
+                                   Grasping::Solution &solution) const
+    {
+        const Eigen::Vector3d none = Eigen::Vector3d::Zero();
+        std::vector<double> &placeJoints = solution[0];
+        if (placeHeight_ > 0.0)
+        {
+            // above the place first, then straight down to it
+            const ObjectPose above{place.position + Eigen::Vector3d(0.0, 0.0, placeHeight_), place.yaw};
+            if (!grasping_->solveCarry(grasp, above, placeJoints.data()))
+                return false;
+            const std::vector<double> aboveJoints = placeJoints;
+            if (!grasping_->solveShortMove({0.0, 0.0, -placeHeight_}, none, placeJoints.data()))
+                return false;
+            solution.resize(3, placeJoints);
+            solution[2] = aboveJoints;
+        }
+        else if (!grasping_->solveCarry(grasp, place, placeJoints.data()))
+            return false;
+        solution.resize(std::max<std::size_t>(solution.size(), 2), solution[0]);
+        solution[1] = solution[0];
+        return grasping_->solveShortMove(none, {0.0, 0.0, -grasping_->settings().approachDistance},
+                                         solution[1].data());
     }
 
     std::optional<SegmentLabel> TransferRigid::explain(const ompl::base::State *from,

@@ -59,11 +59,16 @@ namespace
         ompl::msg::setLogLevel(level);
     }
 
-    /** KUKA TABLE's setup, made after seeding OMPL's random numbers with seed. */
-    ManipulationSetup seededSetup(std::uint_fast32_t seed)
+    /** KUKA TABLE's setup, made after seeding OMPL's random numbers with seed; its transfer
+        places from placeHeight above the place when that is given. */
+    ManipulationSetup seededSetup(std::uint_fast32_t seed, const std::string &placeHeight = "")
     {
         seedOmpl(seed);
-        return ManipulationSetup(kukaTableScene());
+        Scene scene = kukaTableScene();
+        for (PrimitiveSpec &spec : scene.primitives)
+            if (spec.type == "transfer_rigid" && !placeHeight.empty())
+                spec.params["place_height"] = placeHeight;
+        return ManipulationSetup(scene);
     }
 
     /** The setup's primitive called name, as a P, or null. */
@@ -127,8 +132,8 @@ namespace
         table 2, and states made from them (freed with it). */
     struct KukaTable
     {
-        explicit KukaTable(std::uint_fast32_t seed)
-            : setup(seededSetup(seed)),
+        explicit KukaTable(std::uint_fast32_t seed, const std::string &placeHeight = "")
+            : setup(seededSetup(seed, placeHeight)),
               space(*setup.manipulationSpace()),
               start(setup.getProblemDefinition()->getStartState(0)),
               pickup(primitiveOf<Pickup>(setup, "pickup")),
@@ -381,6 +386,60 @@ TEST(KukaGraspSeeds, TransferRetreatsAfterPlacing)
         EXPECT_LE((approachAxis(kuka.space, retreat) - axis).norm(), IK_TOL);
     }
     EXPECT_GE(placed, 3u);
+}
+
+TEST(KukaGraspSeeds, TransferWithAPlaceHeightComesStraightDownOntoThePlace)
+{
+    // the grasping and placing IK restart from random joints: every placement must come from above
+    constexpr double PLACE_HEIGHT = 0.05;
+    unsigned int placedCount = 0;
+    for (std::uint_fast32_t seed = 1; seed <= 5; ++seed)
+    {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        KukaTable kuka(seed, "0.05");
+        const ManipulationStateSpace &space = kuka.space;
+        ASSERT_EQ(kuka.transfer->placeHeight(), PLACE_HEIGHT);
+        Trajectory picked(&space);
+        Trajectory trajectory(&space);
+        if (!kuka.pickUp(picked) || !kuka.carry(picked.back(), kuka.target, trajectory))
+            continue;  // the IK may fail (within its budget of restarts)
+        ++placedCount;
+        const ob::State *lifted = picked.back();
+        ASSERT_EQ(trajectory.size(), 4u);  // lifted, above the place, placed, retreated
+        EXPECT_EQ(trajectory.label(0), TRANSFER_CYL1);
+        EXPECT_EQ(trajectory.label(1), TRANSFER_CYL1);
+        EXPECT_EQ(trajectory.label(2), TRANSIT);
+        const ob::State *above = trajectory.state(1);
+        const ob::State *placed = trajectory.state(2);
+
+        // held the same way above the place as when lifted, placed exactly at the target
+        EXPECT_TRUE(held(space, above, CYL1));
+        EXPECT_TRUE(Grasping::sameGrasp(space, lifted, above, CYL1));
+        EXPECT_LE((space.objectPosition(above, CYL1) - (ON_TABLE2 + Eigen::Vector3d(0.0, 0.0, PLACE_HEIGHT)))
+                      .norm(),
+                  IK_TOL);
+        EXPECT_EQ(space.objectPosition(placed, CYL1), ON_TABLE2);
+        EXPECT_EQ(space.restingSurface(placed, CYL1), TABLE2);
+        EXPECT_TRUE(Grasping::sameGrasp(space, above, placed, CYL1));
+        const auto explained = kuka.transfer->explain(above, placed);
+        ASSERT_TRUE(explained.has_value());
+        EXPECT_EQ(*explained, TRANSFER_CYL1);
+
+        // straight down: the tool keeps its orientation and stays over the place on the way
+        EXPECT_LE((toolFrameOf(space, above).linear() - toolFrameOf(space, placed).linear()).norm(), IK_TOL);
+        ob::State *between = space.allocState();
+        for (const double t : {0.25, 0.5, 0.75})
+        {
+            space.interpolate(above, placed, t, between);
+            const Eigen::Vector3d drift = space.toolPosition(between) - space.toolPosition(placed);
+            EXPECT_LT(drift.head<2>().norm(), 0.005) << "at " << t;
+            EXPECT_GT(drift.z(), 0.0) << "at " << t;
+        }
+        space.freeState(between);
+        expectWithinJointLimits(space, trajectory);
+        expectOthersKeepTheirPoses(space, trajectory, kuka.start, CYL1);
+    }
+    EXPECT_GE(placedCount, 3u);
 }
 
 TEST_F(KukaGrasp, HeldObjectKeepsItsPoseInTheToolAlongTheLiftAndTheTransfer)

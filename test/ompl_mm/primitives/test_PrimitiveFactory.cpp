@@ -2,6 +2,7 @@
 #include "ompl_mm/primitives/ArmPush.h"
 #include "ompl_mm/primitives/PrimitiveFactory.h"
 #include "ompl_mm/primitives/PushMobile.h"
+#include "ompl_mm/primitives/TransferRigid.h"
 #include "ompl_mm/primitives/Transit.h"
 
 #include "common/MobileBlocked.h"
@@ -264,4 +265,21 @@ TEST_F(Factory, ArmPushErrorsNameTheLine)
               "unit_scene.xml:17: <push_interior> parameter 'ik_any_yaw' must be true or false, got 'yes'");
     EXPECT_EQ(error({spec("push_interior", {{"push_length", "0.1"}})}),
               "unit_scene.xml:17: unknown parameter 'push_length' for <push_interior>");
+}
+
+TEST_F(Factory, TransferReadsItsPlaceHeight)
+{
+    const std::vector<PrimitivePtr> primitives =
+        factory_.build({spec("transfer_rigid"), spec("transfer_rigid", {{"place_height", "0.05"}})}, &space_);
+    ASSERT_EQ(primitives.size(), 2u);
+    const auto straight = std::dynamic_pointer_cast<TransferRigid>(primitives[0]);
+    const auto fromAbove = std::dynamic_pointer_cast<TransferRigid>(primitives[1]);
+    ASSERT_TRUE(straight && fromAbove);
+    EXPECT_EQ(straight->placeHeight(), 0.0);
+    EXPECT_EQ(fromAbove->placeHeight(), 0.05);
+    EXPECT_EQ(error({spec("transfer_rigid", {{"place_height", "-0.05"}})}),
+              "unit_scene.xml:17: transfer_rigid place_height must be at least 0, got -0.050000");
+    EXPECT_EQ(error({spec("transfer_rigid", {{"place_height", "high"}})}),
+              "unit_scene.xml:17: <transfer_rigid> parameter 'place_height' must be a finite number, got "
+              "'high'");
 }
