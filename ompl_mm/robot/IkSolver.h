@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <chrono>
+#include <optional>
 #include <vector>
 
 namespace ompl_mm
@@ -54,6 +55,8 @@ namespace ompl_mm
         double postureGain{0.05};
         /** Seconds a solve may take; infinite by default. */
         double timeLimit{1e300};
+        /** Time limits from this many seconds on are none: the solver then reads no clock. */
+        static constexpr double NO_TIME_LIMIT = 1e9;
         /** How Pose5DFreeYaw treats the free yaw. False (the default): the error keeps the
             target's yaw, whose pull on the other axes favours solutions near it but makes an
             attempt diverge that starts more than about a quarter turn away; restarts then find a
@@ -82,9 +85,9 @@ namespace ompl_mm
         Vector6d taskError(const Eigen::Isometry3d &target, const Eigen::Isometry3d &current,
                            IkTask task) const;
 
-        /** One attempt from the chain's values in work_; true when it converged. */
+        /** One attempt from the chain's values in work_, until end if any; true when it converged. */
         bool attempt(const Eigen::Isometry3d &target, IkTask task,
-                     const std::chrono::steady_clock::time_point &end);
+                     const std::optional<std::chrono::steady_clock::time_point> &end);
 
         KinematicChain chain_;
         Eigen::Isometry3d base_;

@@ -63,10 +63,12 @@ namespace ompl_mm
             bool continuous;        ///< turns without limits
             unsigned int variable;  ///< index in the robot's joint vector
             double lower, upper;    ///< limits
+            int alignedAxis{-1};    ///< 0, 1, 2 when axis is +-x, +-y, +-z; -1 for any other axis
         };
 
-        /** The joint's motion for value q. */
-        static Eigen::Isometry3d motion(const ChainJoint &joint, double q);
+        /** Moves frame (which ends at joint's frame) by the joint's motion for value q: a turn
+            about an axis along x, y or z changes two columns of the rotation only. */
+        static void move(Eigen::Isometry3d &frame, const ChainJoint &joint, double q);
 
         std::vector<ChainJoint> joints_;
         Eigen::Isometry3d after_{Eigen::Isometry3d::Identity()};  ///< from the last moving joint to the tool

@@ -77,7 +77,7 @@ namespace ompl_mm
     }
 
     bool IkSolver::attempt(const Eigen::Isometry3d &target, IkTask task,
-                           const std::chrono::steady_clock::time_point &end)
+                           const std::optional<std::chrono::steady_clock::time_point> &end)
     {
         const unsigned int n = chain_.size();
         for (unsigned int it = 0; it < iterations; ++it)
@@ -88,14 +88,15 @@ namespace ompl_mm
             const double size = error.norm();
             if (size < tolerance)
                 return true;
-            if (std::chrono::steady_clock::now() > end)
+            if (end && std::chrono::steady_clock::now() > *end)
                 return false;
             // the rows the task leaves free take no part in the step
             if (task == IkTask::Pose5DFreeYaw)
                 jacobian_.row(5).setZero();
             else if (task == IkTask::Position3D)
                 jacobian_.bottomRows<3>().setZero();
-            Eigen::Matrix<double, 6, 6> normal = jacobian_ * jacobian_.transpose();
+            // a coefficient-wise product: at this size faster than a general matrix product
+            Eigen::Matrix<double, 6, 6> normal = jacobian_.lazyProduct(jacobian_.transpose());
             // less damping as the error shrinks: fast final convergence, steady far from the target
             const double lambda = damping * std::min(1.0, size);
             normal.diagonal().array() += lambda * lambda;
@@ -134,9 +135,12 @@ namespace ompl_mm
     bool IkSolver::search(const Eigen::Isometry3d &target, IkTask task, double *q, ompl::RNG &rng,
                           IkScope scope)
     {
-        const auto end = std::chrono::steady_clock::now() +
-                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                             std::chrono::duration<double>(std::min(timeLimit, 1e9)));
+        // no clock readings without a time limit
+        std::optional<std::chrono::steady_clock::time_point> end;
+        if (timeLimit < NO_TIME_LIMIT)
+            end = std::chrono::steady_clock::now() +
+                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                      std::chrono::duration<double>(timeLimit));
         lastIterations_ = 0;
         const unsigned int n = chain_.size();
         for (unsigned int i = 0; i < n; ++i)
@@ -153,7 +157,7 @@ namespace ompl_mm
                     q[chain_.variable(i)] = work_[chain_.variable(i)];
                 return true;
             }
-            if (std::chrono::steady_clock::now() > end)
+            if (end && std::chrono::steady_clock::now() > *end)
                 return false;
         }
         return false;

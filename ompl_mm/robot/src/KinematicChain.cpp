@@ -3,6 +3,7 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ompl_mm
 {
@@ -21,26 +22,55 @@ namespace ompl_mm
             pending = pending * joint.origin;
             if (joint.type == Joint::Type::Fixed)
                 continue;
-            joints_.push_back({pending, joint.axis, joint.type == Joint::Type::Prismatic,
-                               joint.type == Joint::Type::Continuous,
-                               static_cast<unsigned int>(joint.variable), joint.lower, joint.upper});
+            ChainJoint chainJoint{pending,
+                                  joint.axis,
+                                  joint.type == Joint::Type::Prismatic,
+                                  joint.type == Joint::Type::Continuous,
+                                  static_cast<unsigned int>(joint.variable),
+                                  joint.lower,
+                                  joint.upper};
+            for (int k = 0; k < 3; ++k)
+                if (std::abs(joint.axis[k]) == 1.0)
+                    chainJoint.alignedAxis = k;
+            joints_.push_back(chainJoint);
             pending.setIdentity();
         }
         after_ = pending * tool;
     }
 
-    Eigen::Isometry3d KinematicChain::motion(const ChainJoint &joint, double q)
+    void KinematicChain::move(Eigen::Isometry3d &frame, const ChainJoint &joint, double q)
     {
         if (joint.prismatic)
-            return Eigen::Isometry3d(Eigen::Translation3d(q * joint.axis));
-        return Eigen::Isometry3d(Eigen::AngleAxisd(q, joint.axis));
+        {
+            frame.translation() += frame.linear() * (q * joint.axis);
+            return;
+        }
+        if (joint.alignedAxis < 0)
+        {
+            frame.linear() = frame.linear() * Eigen::AngleAxisd(q, joint.axis).toRotationMatrix();
+            return;
+        }
+        // a turn about +-e_k mixes the two other columns of the rotation
+        const int k = joint.alignedAxis;
+        const int a = (k + 1) % 3;
+        const int b = (k + 2) % 3;
+        const double angle = joint.axis[k] > 0.0 ? q : -q;
+        const double c = std::cos(angle);
+        const double s = std::sin(angle);
+        auto rotation = frame.linear();
+        const Eigen::Vector3d columnA = rotation.col(a);
+        rotation.col(a) = c * columnA + s * rotation.col(b);
+        rotation.col(b) = c * rotation.col(b) - s * columnA;
     }
 
     Eigen::Isometry3d KinematicChain::toolPose(const double *q, const Eigen::Isometry3d &base) const
     {
         Eigen::Isometry3d frame = base;
         for (const ChainJoint &joint : joints_)
-            frame = frame * joint.before * motion(joint, q[joint.variable]);
+        {
+            frame = frame * joint.before;
+            move(frame, joint, q[joint.variable]);
+        }
         return frame * after_;
     }
 
@@ -56,7 +86,7 @@ namespace ompl_mm
             frame = frame * joint.before;
             jacobian.col(static_cast<Eigen::Index>(i)).head<3>() = frame.translation();
             jacobian.col(static_cast<Eigen::Index>(i)).tail<3>() = frame.linear() * joint.axis;
-            frame = frame * motion(joint, q[joint.variable]);
+            move(frame, joint, q[joint.variable]);
         }
         const Eigen::Isometry3d tool = frame * after_;
         // second pass: a turning joint moves the tool point by axis x (point - origin)

@@ -83,6 +83,31 @@ TEST(KinematicChain, ToolPoseEqualsTheModelsForwardKinematicsWithABaseAndAToolOf
     }
 }
 
+TEST(KinematicChain, ToolPoseEqualsTheModelsForwardKinematicsForAxesOfEveryDirection)
+{
+    // the Meka-like arm turns about -x, -y and -z, the torso's left arm about a slanted axis (1 1 0)
+    const std::vector<std::pair<std::string, std::string>> chains = {
+        {std::string(OMPL_MM_SCENES_DIR) + "/robots/meka_torso_arm.urdf", "tool"},
+        {std::string(OMPL_MM_TEST_DATA_DIR) + "/robots/torso_tree.urdf", "left_hand"}};
+    const Eigen::Isometry3d base =
+        Eigen::Translation3d(0.3, 0.1, -0.2) * Eigen::AngleAxisd(2.0, Eigen::Vector3d::UnitZ());
+    std::mt19937 rng(5);
+    for (const auto &[urdf, tip] : chains)
+    {
+        SCOPED_TRACE(urdf);
+        const RobotModel robot = RobotModel::fromUrdfFile(urdf);
+        const KinematicChain chain(robot, robot.linkIndex(tip));
+        Eigen::Matrix<double, 6, Eigen::Dynamic> jacobian(6, chain.size());
+        for (int k = 0; k < 50; ++k)
+        {
+            const std::vector<double> q = randomJoints(chain, robot.dof(), rng);
+            const Eigen::Isometry3d expected = robot.linkFrame(q.data(), base, robot.linkIndex(tip));
+            EXPECT_LT(maxDifference(chain.toolPose(q.data(), base), expected), 1e-12);
+            EXPECT_LT(maxDifference(chain.toolPoseAndJacobian(q.data(), base, jacobian), expected), 1e-12);
+        }
+    }
+}
+
 TEST(KinematicChain, JacobianEqualsFiniteDifferencesOfThePose)
 {
     const RobotModel robot = RobotModel::fromUrdfFile(KUKA);
