@@ -3,23 +3,32 @@ scene, planner, seed, time_limit_s, solved, approximate, status, time_s, then th
 details), read back by the benchmark scripts. Standard library only."""
 import json
 import os
-import subprocess
 import sys
+import tempfile
 
 
 def run_app(binary, scene, seed, workdir, extra=(), path_file=None):
-    """Runs one planning app on scene with seed and returns its run record (a dict); with
-    path_file, the app also writes its path there (--path). Exits the script when the app rejects
-    the input (exit 2): every later run would fail too."""
+    """Runs one planning app on scene with seed and returns its run record (a dict) with the peak
+    memory of the process added ("peak_memory_mb", its largest resident set); with path_file, the
+    app also writes its path there (--path). Exits the script when the app rejects the input
+    (exit 2): every later run would fail too."""
     out = os.path.join(workdir, f"{os.path.basename(scene)}-{'-'.join(extra)}-{seed}.json".replace("/", "_"))
     args = [binary, scene, "--seed", str(seed), "--json", out, *extra]
     if path_file:
         args += ["--path", path_file]
-    status = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    if status.returncode == 2:
-        sys.exit(f"{os.path.basename(binary)} rejected the input: {status.stderr.strip()}")
+    with tempfile.TemporaryFile(mode="w+") as stderr:
+        # spawned and reaped here, so that wait4 gives this process's own resource use
+        pid = os.posix_spawn(args[0], args, os.environ,
+                             file_actions=[(os.POSIX_SPAWN_OPEN, 1, os.devnull, os.O_WRONLY, 0),
+                                           (os.POSIX_SPAWN_DUP2, stderr.fileno(), 2)])
+        _, status, usage = os.wait4(pid, 0)
+        if os.waitstatus_to_exitcode(status) == 2:
+            stderr.seek(0)
+            sys.exit(f"{os.path.basename(binary)} rejected the input: {stderr.read().strip()}")
     with open(out) as f:
-        return json.load(f)
+        record = json.load(f)
+    record["peak_memory_mb"] = usage.ru_maxrss / 1024.0  # Linux reports kilobytes
+    return record
 
 
 def check_binary(binary):

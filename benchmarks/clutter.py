@@ -1,0 +1,167 @@
+#!/usr/bin/env python3
+"""MOPL in clutter: scene families with K extra movable objects that the goal does not care about,
+and how planning time and memory grow with K. Each family adds K cylinders to a base scene (by
+default MOBILE BLOCKED), placed at random on the free floor, several placements per K: half of the
+extras are placed where they block the way (the gap to the nearest obstacle or object is narrower
+than the robot, so it cannot pass between them), the other half anywhere free. Each scene is
+planned over several seeds, one ompl_mm_plan process per run; the report gives per K the success,
+the median, mean and max planning time, the peak memory of the process and where the time went.
+Standard library only.
+
+Example (the generated scenes go to out/clutter/):
+  benchmarks/clutter.py --counts 0 4 8 12 16 --placements 2 --seeds 5 --markdown out/clutter.md
+"""
+import argparse
+import math
+import os
+import random
+import statistics
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+from run_records import check_binary, run_app
+
+# The extras: MOBILE BLOCKED's cylinders.
+RADIUS = 0.2
+LENGTH = 0.5
+# Floor margin kept free around the robot's start and goal and the goal objects' targets, metres.
+KEEP_CLEAR = 0.5
+# Least gap between an extra and anything else, metres: no contact at the start.
+MIN_GAP = 0.01
+PLACEMENT_TRIES = 100000
+
+
+class Floor:
+    """The free floor of a base scene: its surface rectangle, the boxes standing on it, the objects
+    and the places to keep clear."""
+
+    def __init__(self, root, robot_radius):
+        surface = root.find("surface")
+        self.low = [float(v) for v in surface.get("min").split()]
+        self.high = [float(v) for v in surface.get("max").split()]
+        self.boxes = []  # (centre x, y, half size x, y)
+        for obstacle in root.findall("obstacle"):
+            box, origin = obstacle.find("box"), obstacle.find("origin")
+            if box is None or origin is None or origin.get("rpy"):
+                sys.exit(f"obstacle '{obstacle.get('name')}': only boxes without rpy are supported")
+            x, y, _ = (float(v) for v in origin.get("xyz").split())
+            sx, sy, _ = (float(v) for v in box.get("size").split())
+            self.boxes.append((x, y, sx / 2, sy / 2))
+        self.discs = []  # (x, y, radius) of the objects
+        for obj in root.find("start").findall("object"):
+            x, y, _ = (float(v) for v in obj.get("xyz").split())
+            self.discs.append((x, y, float(root.find(f"object[@name='{obj.get('name')}']/cylinder").get("radius"))))
+        start = [float(v) for v in root.find("start/robot").get("joints").split()]
+        goal = [float(v) for v in root.find("goal/robot").get("joints").split()]
+        self.clear = [start[:2], goal[:2]]
+        for obj in root.find("goal").findall("object"):
+            x, y = obj.get("xyz").split()[:2]
+            if x != "*" and y != "*":
+                self.clear.append([float(x), float(y)])
+        self.robot_diameter = 2 * robot_radius
+
+    def gap(self, x, y, r):
+        """The free gap from a disc at (x, y) of radius r to the nearest box, wall or object."""
+        gaps = [x - self.low[0] - r, self.high[0] - x - r, y - self.low[1] - r, self.high[1] - y - r]
+        for bx, by, hx, hy in self.boxes:
+            dx, dy = max(abs(x - bx) - hx, 0.0), max(abs(y - by) - hy, 0.0)
+            gaps.append(math.hypot(dx, dy) - r)
+        gaps += [math.hypot(x - ox, y - oy) - r - orad for ox, oy, orad in self.discs]
+        return min(gaps)
+
+    def place(self, rng, blocking):
+        """A free spot for one more disc of RADIUS (touching nothing): one that leaves the robot no
+        way between it and its nearest neighbour when blocking, else any."""
+        for _ in range(PLACEMENT_TRIES):
+            x = rng.uniform(self.low[0] + RADIUS, self.high[0] - RADIUS)
+            y = rng.uniform(self.low[1] + RADIUS, self.high[1] - RADIUS)
+            if any(math.hypot(x - cx, y - cy) < KEEP_CLEAR + RADIUS for cx, cy in self.clear):
+                continue
+            gap = self.gap(x, y, RADIUS)
+            if gap >= MIN_GAP and (gap < self.robot_diameter or not blocking):
+                self.discs.append((x, y, RADIUS))
+                return x, y
+        sys.exit(f"no free spot for {len(self.discs) + 1} objects after {PLACEMENT_TRIES} tries")
+
+
+def make_scene(base, count, placement, robot_radius, directory):
+    """Writes the base scene with count extras of placement number `placement`; returns its path
+    and the dimension of its state space (the robot's joints, and x, y, z, yaw per object)."""
+    tree = ET.parse(base)
+    root = tree.getroot()
+    robot = root.find("robot")
+    robot.set("urdf", os.path.join(os.path.dirname(os.path.abspath(base)), robot.get("urdf")))
+    floor = Floor(root, robot_radius)
+    rng = random.Random(placement)
+    objects = root.findall("object")
+    after = list(root).index(objects[-1]) + 1
+    start = root.find("start")
+    for i in range(count):
+        x, y = floor.place(rng, blocking=(i % 2 == 0))
+        name = f"extra{i + 1}"
+        element = ET.Element("object", name=name)
+        ET.SubElement(element, "cylinder", radius=str(RADIUS), length=str(LENGTH))
+        root.insert(after + i, element)
+        ET.SubElement(start, "object", name=name, xyz=f"{x:.4f} {y:.4f} 0")
+    root.set("name", f"{root.get('name')}_k{count}_p{placement}")
+    path = os.path.join(directory, f"{root.get('name')}.xml")
+    ET.indent(tree)
+    tree.write(path, xml_declaration=True, encoding="unicode")
+    joints = len(start.find("robot").get("joints").split())
+    return path, joints + 4 * len(root.findall("object"))
+
+
+def report(count, dims, results):
+    solved = [r for r in results if r["solved"]]
+    times = sorted(r["time_s"] if r["solved"] else math.inf for r in results)
+    memory = [r["peak_memory_mb"] for r in results]
+    total = max(sum(r["time_s"] for r in solved), 1e-12)
+    share = lambda key: f"{100.0 * sum(r['stats'][key] for r in solved) / total:.0f}"
+    return (f"| {count} | {dims} | {len(solved)}/{len(results)} | {statistics.median(times):.2f} s | "
+            f"{statistics.mean(t for t in times if t < math.inf) if solved else math.nan:.2f} s | "
+            f"{max(times):.2f} s | {statistics.median(memory):.0f} / {max(memory):.0f} MB | "
+            f"{share('time_nearest_s')} / {share('time_sampling_s')} / {share('time_propagate_s')} / "
+            f"{share('time_connect_s')} / {share('time_smoothing_s')} |")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--scene", default="scenes/mobile_blocked.xml", help="base scene (default: %(default)s)")
+    parser.add_argument("--counts", type=int, nargs="+", default=[0, 4, 8, 12, 16], help="numbers of extras K")
+    parser.add_argument("--placements", type=int, default=2, help="placements per K (default: %(default)s)")
+    parser.add_argument("--seeds", type=int, default=5, help="seeds per placement (default: %(default)s)")
+    parser.add_argument("--time-limit", type=float, default=60.0, help="seconds per run (default: %(default)s)")
+    parser.add_argument("--robot-radius", type=float, default=0.2, help="metres (default: %(default)s)")
+    parser.add_argument("--binary", default="build/apps/ompl_mm_plan")
+    parser.add_argument("--out", default="out/clutter", help="directory of the scenes (default: %(default)s)")
+    parser.add_argument("--markdown", help="also write the table to this file")
+    args = parser.parse_args()
+    check_binary(args.binary)
+    if min(args.counts) < 0 or args.placements < 1 or args.seeds < 1 or not args.time_limit > 0:
+        sys.exit("counts must be at least 0, placements and seeds at least 1, the time limit positive")
+    os.makedirs(args.out, exist_ok=True)
+
+    lines = [f"{os.path.basename(args.scene)} with K extra objects, {args.placements} placements x "
+             f"{args.seeds} seeds per K, {args.time_limit:g} s limit", "",
+             "| K | state dims | solved | median | mean (solved) | max | peak memory median / max | "
+             "time % nearest / sampling / propagate / connect / smoothing |",
+             "|---|---|---|---|---|---|---|---|"]
+    print("\n".join(lines), flush=True)
+    with tempfile.TemporaryDirectory() as workdir:
+        for count in args.counts:
+            results = []
+            for placement in range(1, args.placements + 1):
+                scene, dims = make_scene(args.scene, count, placement, args.robot_radius, args.out)
+                for seed in range(1, args.seeds + 1):
+                    results.append(run_app(args.binary, scene, seed, workdir,
+                                           ("--time-limit", str(args.time_limit))))
+            lines.append(report(count, dims, results))
+            print(lines[-1], flush=True)
+    if args.markdown:
+        with open(args.markdown, "w") as f:
+            f.write("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
