@@ -62,6 +62,7 @@ def report(name, results):
         ("collision queries (mean)", f"{statistics.mean(r['stats']['collision_queries'] for r in solved):.0f}", ""),
         ("path vertices (mean)", f"{statistics.mean(r['path_vertices'] for r in solved):.1f}", "path_vertices"),
         ("Cartesian path length [m] (mean)", f"{statistics.mean(r['path_length_m'] for r in solved):.2f}", "length_m"),
+        ("solutions passing PathGeometric::check()", f"{sum(r['path_valid'] for r in solved)}/{len(solved)}", ""),
     ]
     for kind, plural in (("transit", "transits"), ("push", "pushes"), ("transfer", "transfers")):
         rows.append((f"{plural} in path (mean)", f"{statistics.mean(r['primitives'][kind] for r in solved):.2f}", kind))

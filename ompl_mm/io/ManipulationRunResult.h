@@ -7,8 +7,9 @@ namespace ompl_mm
 {
     /** The record of the setup's last solve(), which run describes (see docs/user-guide.md for the
         JSON that ompl_mm_plan writes from it): tree sizes, MOPL's statistics when the planner is
-        MOPL, and for solved runs the Cartesian tool-path length (metres), the path's vertices and
-        its primitives by kind. @pre solve() has been called. */
+        MOPL, and for solved runs the Cartesian tool-path length (metres), the path's vertices,
+        whether it passes OMPL's PathGeometric::check() and its primitives by kind.
+        @pre solve() has been called. */
     ompl_core::RunResult manipulationRunResult(const ompl_core::RunDescription &run,
                                                const ManipulationSetup &setup);
 }  // namespace ompl_mm

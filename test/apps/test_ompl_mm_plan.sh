@@ -52,6 +52,7 @@ for key in ["time_nearest_s", "iterations", "collision_queries"]:
     assert isinstance(stats.get(key), (int, float)) and stats[key] >= 0, f"stats.{key} is {stats.get(key)!r}"
 assert stats["iterations"] > 0 and stats["collision_queries"] > 0, "no iterations or collision queries counted"
 assert isinstance(d["path_length_m"], (int, float)) and d["path_length_m"] > 0, f"path_length_m is {d['path_length_m']!r}"
+assert d["path_valid"] is True, f"path_valid is {d['path_valid']!r}"
 assert isinstance(d["path_vertices"], int) and d["path_vertices"] > 1, f"path_vertices is {d['path_vertices']!r}"
 counts = d["primitives"]
 for kind in ["transit", "push", "pickup", "transfer"]:

@@ -43,6 +43,7 @@ namespace ompl_mm
                 primitives.addCount(kind, count);
             result.details.addNumber("path_length_m", path.toolPathLength())
                 .addCount("path_vertices", path.getStateCount())
+                .addFlag("path_valid", path.check())  // OMPL's own re-check of states and motions
                 .addRecord("primitives", primitives);
         }
         return result;
