@@ -12,8 +12,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -217,6 +219,52 @@ TEST(MOPLOnMeka, SolvesWithPickupsAndPassesTheRecheck)
     EXPECT_GE(counts.at("pickup"), 2u);
     EXPECT_GE(counts.at("transfer"), 2u);
     recheck(*setup.manipulationSpace(), path, scene);
+}
+
+namespace
+{
+    /** The (scene, seed) pairs of a re-check list "scene:first-last,scene:seed,...". */
+    std::vector<std::pair<std::string, unsigned int>> recheckList(const std::string &text)
+    {
+        std::vector<std::pair<std::string, unsigned int>> runs;
+        std::stringstream items(text);
+        std::string item;
+        while (std::getline(items, item, ','))
+        {
+            const std::size_t colon = item.find(':');
+            const std::size_t dash = item.find('-', colon);
+            const std::string scene = item.substr(0, colon);
+            const unsigned int first = static_cast<unsigned int>(std::stoul(item.substr(colon + 1)));
+            const unsigned int last = dash == std::string::npos
+                                          ? first
+                                          : static_cast<unsigned int>(std::stoul(item.substr(dash + 1)));
+            for (unsigned int seed = first; seed <= last; ++seed)
+                runs.emplace_back(scene, seed);
+        }
+        return runs;
+    }
+}  // namespace
+
+// Re-checks the solutions of many seeds, each solved within its scene's time limit: a few by default,
+// any list with OMPL_MM_RECHECK, e.g.
+// OMPL_MM_RECHECK=kuka_table:1-100,kuka_cabinet:1-100,meka_cleanup:1-50 test_MOPLArms
+// --gtest_filter=*ManySeeds*
+TEST(MOPLRecheck, ManySeedsSolveAndPassTheRecheck)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const char *list = std::getenv("OMPL_MM_RECHECK");
+    for (const auto &[name, seed] : recheckList(list ? list : "kuka_table:5-6,kuka_cabinet:2"))
+    {
+        SCOPED_TRACE(name + " seed " + std::to_string(seed));
+        const Scene scene = loadScene(OMPL_MM_SCENES_DIR "/" + name + ".xml");
+        const std::unique_ptr<ManipulationSetup> solved = seededSetup(scene, seed);
+        ManipulationSetup &setup = *solved;
+        ASSERT_EQ(setup.solve(scene.timeLimit), ompl::base::PlannerStatus::EXACT_SOLUTION);
+        const ManipulationPath &path = setup.manipulationPath();
+        EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
+        EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
+        recheck(*setup.manipulationSpace(), path, scene);
+    }
 }
 
 TEST(MOPLOnKukaTable, SameSeedGivesSamePath)
