@@ -112,15 +112,17 @@ def make_scene(base, count, placement, robot_radius, directory):
     return path, joints + 4 * len(root.findall("object"))
 
 
-def report(count, dims, results):
+def report(count, dims, results, time_limit):
     solved = [r for r in results if r["solved"]]
     times = sorted(r["time_s"] if r["solved"] else math.inf for r in results)
     memory = [r["peak_memory_mb"] for r in results]
     total = max(sum(r["time_s"] for r in solved), 1e-12)
     share = lambda key: f"{100.0 * sum(r['stats'][key] for r in solved) / total:.0f}"
-    return (f"| {count} | {dims} | {len(solved)}/{len(results)} | {statistics.median(times):.2f} s | "
-            f"{statistics.mean(t for t in times if t < math.inf) if solved else math.nan:.2f} s | "
-            f"{max(times):.2f} s | {statistics.median(memory):.0f} / {max(memory):.0f} MB | "
+    mean = f"{statistics.mean(r['time_s'] for r in solved):.2f} s" if solved else "-"
+    longest = f"{times[-1]:.2f} s" if times[-1] < math.inf else f"unsolved in {time_limit:g} s"
+    median = f"{statistics.median(times):.2f} s" if statistics.median(times) < math.inf else "-"
+    return (f"| {count} | {dims} | {len(solved)}/{len(results)} | {median} | {mean} | {longest} | "
+            f"{statistics.median(memory):.0f} / {max(memory):.0f} MB | "
             f"{share('time_nearest_s')} / {share('time_sampling_s')} / {share('time_propagate_s')} / "
             f"{share('time_connect_s')} / {share('time_smoothing_s')} |")
 
@@ -156,7 +158,7 @@ def main():
                 for seed in range(1, args.seeds + 1):
                     results.append(run_app(args.binary, scene, seed, workdir,
                                            ("--time-limit", str(args.time_limit))))
-            lines.append(report(count, dims, results))
+            lines.append(report(count, dims, results, args.time_limit))
             print(lines[-1], flush=True)
     if args.markdown:
         with open(args.markdown, "w") as f:
