@@ -99,23 +99,22 @@ namespace ompl_mm
                                    Grasping::Solution &solution) const
     {
         const Eigen::Vector3d none = Eigen::Vector3d::Zero();
-        std::vector<double> &placeJoints = solution[0];
+        std::vector<double> above;
         if (placeHeight_ > 0.0)
         {
             // above the place first, then straight down to it
-            const ObjectPose above{place.position + Eigen::Vector3d(0.0, 0.0, placeHeight_), place.yaw};
-            if (!grasping_->solveCarry(grasp, above, placeJoints.data()))
+            const ObjectPose abovePlace{place.position + Eigen::Vector3d(0.0, 0.0, placeHeight_), place.yaw};
+            if (!grasping_->solveCarry(grasp, abovePlace, solution[0].data()))
                 return false;
-            const std::vector<double> aboveJoints = placeJoints;
-            if (!grasping_->solveShortMove({0.0, 0.0, -placeHeight_}, none, placeJoints.data()))
+            above = solution[0];
+            if (!grasping_->solveShortMove({0.0, 0.0, -placeHeight_}, none, solution[0].data()))
                 return false;
-            solution.resize(3, placeJoints);
-            solution[2] = aboveJoints;
         }
-        else if (!grasping_->solveCarry(grasp, place, placeJoints.data()))
+        else if (!grasping_->solveCarry(grasp, place, solution[0].data()))
             return false;
-        solution.resize(std::max<std::size_t>(solution.size(), 2), solution[0]);
-        solution[1] = solution[0];
+        solution.resize(2, solution[0]);
+        if (!above.empty())
+            solution.push_back(std::move(above));
         return grasping_->solveShortMove(none, {0.0, 0.0, -grasping_->settings().approachDistance},
                                          solution[1].data());
     }

@@ -143,6 +143,16 @@ namespace
         }
     }
 
+    /** The setup's solution passes OMPL's PathGeometric::check(), reaches the goal and passes the
+        re-check. */
+    void expectCorrect(const ManipulationSetup &setup, const Scene &scene)
+    {
+        const ManipulationPath &path = setup.manipulationPath();
+        EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
+        EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
+        recheck(*setup.manipulationSpace(), path, scene);
+    }
+
     /** The scene's setup made with OMPL seeded by seed, MOPL seeded by it too. */
     std::unique_ptr<ManipulationSetup> seededSetup(const Scene &scene, unsigned int seed)
     {
@@ -172,13 +182,11 @@ TEST_P(MOPLOnKukaTable, SolvesAndSolutionPassesTheRecheck)
     ManipulationSetup &setup = *solved;
     ASSERT_EQ(solveBounded(setup), ompl::base::PlannerStatus::EXACT_SOLUTION);
     const ManipulationPath &path = setup.manipulationPath();
-    EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
-    EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
     const std::map<std::string, unsigned int> counts = path.primitiveCounts();
     EXPECT_EQ(counts.at("pickup"), 3u);
     EXPECT_EQ(counts.at("transfer"), 3u);
     EXPECT_GT(setup.mopl()->statistics().ikTime, 0.0);
-    recheck(*setup.manipulationSpace(), path, scene);
+    expectCorrect(setup, scene);
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, MOPLOnKukaTable, ::testing::Values(1u, 2u, 4u));
@@ -191,8 +199,6 @@ TEST(MOPLOnKukaCabinet, SolvesWithPushesIntoTheCabinetAndPassesTheRecheck)
     ManipulationSetup &setup = *solved;
     ASSERT_EQ(solveBounded(setup), ompl::base::PlannerStatus::EXACT_SOLUTION);
     const ManipulationPath &path = setup.manipulationPath();
-    EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
-    EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
     const ManipulationStateSpace &space = *setup.manipulationSpace();
     unsigned int intoCabinet = 0;
     for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i)
@@ -200,7 +206,7 @@ TEST(MOPLOnKukaCabinet, SolvesWithPushesIntoTheCabinetAndPassesTheRecheck)
             space.objectPosition(path.getState(i + 1), path.label(i).object).y() < CABINET_FRONT)
             ++intoCabinet;
     EXPECT_GE(intoCabinet, 1u);
-    recheck(space, path, scene);
+    expectCorrect(setup, scene);
 }
 
 TEST(MOPLOnMeka, SolvesWithPickupsAndPassesTheRecheck)
@@ -212,13 +218,11 @@ TEST(MOPLOnMeka, SolvesWithPickupsAndPassesTheRecheck)
     ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(MEKA_MAX_ITERATIONS)),
               ompl::base::PlannerStatus::EXACT_SOLUTION);
     const ManipulationPath &path = setup.manipulationPath();
-    EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
-    EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
     // the bottles of the upper level change levels: picked up and carried
     const std::map<std::string, unsigned int> counts = path.primitiveCounts();
     EXPECT_GE(counts.at("pickup"), 2u);
     EXPECT_GE(counts.at("transfer"), 2u);
-    recheck(*setup.manipulationSpace(), path, scene);
+    expectCorrect(setup, scene);
 }
 
 namespace
@@ -260,10 +264,7 @@ TEST(MOPLRecheck, ManySeedsSolveAndPassTheRecheck)
         const std::unique_ptr<ManipulationSetup> solved = seededSetup(scene, seed);
         ManipulationSetup &setup = *solved;
         ASSERT_EQ(setup.solve(scene.timeLimit), ompl::base::PlannerStatus::EXACT_SOLUTION);
-        const ManipulationPath &path = setup.manipulationPath();
-        EXPECT_TRUE(path.check()) << "OMPL's own re-check of the path";
-        EXPECT_TRUE(setup.getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
-        recheck(*setup.manipulationSpace(), path, scene);
+        expectCorrect(setup, scene);
     }
 }
 
