@@ -8,8 +8,9 @@ planned over several seeds, one ompl_mm_plan process per run; the report gives p
 the median, mean and max planning time, the peak memory of the process and where the time went.
 Standard library only.
 
-Example (the generated scenes go to out/clutter/):
-  benchmarks/clutter.py --counts 0 4 8 12 16 --placements 2 --seeds 5 --markdown out/clutter.md
+Example (the generated scenes go to out/clutter/; MOPL pushes objects in the way aside):
+  benchmarks/clutter.py --counts 0 4 8 12 16 --placements 2 --seeds 5 --param clear_probability=1 \
+      --markdown out/clutter.md
 """
 import argparse
 import math
@@ -138,6 +139,8 @@ def main():
     parser.add_argument("--binary", default="build/apps/ompl_mm_plan")
     parser.add_argument("--out", default="out/clutter", help="directory of the scenes (default: %(default)s)")
     parser.add_argument("--markdown", help="also write the table to this file")
+    parser.add_argument("--param", action="append", default=[], metavar="NAME=VALUE",
+                        help="set a planner parameter in every run (repeatable), e.g. clear_probability=1")
     args = parser.parse_args()
     check_binary(args.binary)
     if min(args.counts) < 0 or args.placements < 1 or args.seeds < 1 or not args.time_limit > 0:
@@ -145,7 +148,8 @@ def main():
     os.makedirs(args.out, exist_ok=True)
 
     lines = [f"{os.path.basename(args.scene)} with K extra objects, {args.placements} placements x "
-             f"{args.seeds} seeds per K, {args.time_limit:g} s limit", "",
+             f"{args.seeds} seeds per K, {args.time_limit:g} s limit"
+             + "".join(f", {setting}" for setting in args.param), "",
              "| K | state dims | solved | median | mean (solved) | max | peak memory median / max | "
              "time % nearest / sampling / propagate / connect / smoothing |",
              "|---|---|---|---|---|---|---|---|"]
@@ -156,8 +160,9 @@ def main():
             for placement in range(1, args.placements + 1):
                 scene, dims = make_scene(args.scene, count, placement, args.robot_radius, args.out)
                 for seed in range(1, args.seeds + 1):
+                    params = [option for setting in args.param for option in ("--param", setting)]
                     results.append(run_app(args.binary, scene, seed, workdir,
-                                           ("--time-limit", str(args.time_limit))))
+                                           ("--time-limit", str(args.time_limit), *params)))
             lines.append(report(count, dims, results, args.time_limit))
             print(lines[-1], flush=True)
     if args.markdown:

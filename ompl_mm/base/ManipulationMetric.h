@@ -19,6 +19,10 @@ namespace ompl_mm
         Eigen::Quaterniond toolRotation{Eigen::Quaterniond::Identity()};  ///< tool frame's world rotation
         std::vector<Eigen::Vector3d> objects;  ///< base centres in the world, metres
         std::vector<double> yaws;              ///< object rotations about world z, radians
+        /** Bit i: object i stands elsewhere than its start pose in the scene (any difference), so
+            two points whose bit i is clear agree on object i: the object terms need only look at
+            the objects either has displaced. */
+        std::uint64_t displaced{0};
     };
 
     /** MOPL's distance ("mini empty-space planner with penalties"): an estimate of how far the
@@ -77,7 +81,7 @@ namespace ompl_mm
         {
             MetricPoint point;                  ///< the sample's quantities (undefined parts hold anything)
             std::vector<double> toolToObjects;  ///< squared distances from point.tool to point.objects
-            std::vector<char> objectDefined;    ///< per object: nonzero when the sample defines it
+            std::uint64_t definedObjects{0};    ///< bit i: the sample defines object i
             bool robotDefined{true};            ///< the sample defines the robot's joints
             bool sampleIsTarget{true};  ///< the sample is `to` (forward tree) or `from` (backward tree)
         };
@@ -94,7 +98,8 @@ namespace ompl_mm
             double bound{0.0};        ///< sum of the moving objects' penalties and displacements, metres
         };
         /** The ObjectCost of vertices whose objects are those of `objects` against query: an object
-            must move when the query defines it and its pose differs (beyond 1e-9). */
+            must move when the query defines it and its pose differs (beyond 1e-9). Looks only at
+            the objects that one of them has displaced (MetricPoint::displaced). */
         ObjectCost objectCost(const MetricPoint &objects, const Query &query) const;
 
         /** A lower bound of the robot term for robots whose weighted joints (MetricPoint::joints)

@@ -94,6 +94,9 @@ namespace ompl_mm
         {
             bool free;            ///< every configuration along the motion is collision-free
             double safeFraction;  ///< a fraction of the way up to which it is free, with SAFE_CLEARANCE there
+            /** The movable object in the contact that stopped the motion (of two, the one the motion
+                moves less), or -1: free, or stopped by the robot itself or an obstacle alone. */
+            int blockingObject{-1};
         };
 
         /** Continuous collision check of a motion from one configuration to another, under the
@@ -150,6 +153,8 @@ namespace ompl_mm
         /** The distance of the bodies of a pair, placed (a lower bound, DISTANCE_ERROR below it at
             most); zero or less when they touch. */
         static double distance(const SweptPair &pair);
+        /** The object of a pair in contact that SweepCheck::blockingObject names, or -1. */
+        int blockingObject(const SweptPair &pair) const;
 
         /** Fills sweptPairs_ with the pairs a motion may bring together. */
         void findSweptPairs(const Configuration &from, const Configuration &to) const;

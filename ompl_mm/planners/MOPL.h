@@ -25,6 +25,13 @@ namespace ompl_mm
     constexpr double MIN_VERTEX_STEP = 0.01;
     /** vertex_step's highest value. */
     constexpr double MAX_VERTEX_STEP = 10.0;
+    /** any_object_probability's lowest value: objects out of play must keep a chance to be sampled,
+        or the planner would lose its completeness. */
+    constexpr double MIN_ANY_OBJECT_PROBABILITY = 0.01;
+    /** clear_radius's lowest value (metres): a shorter push would rarely clear a way. */
+    constexpr double MIN_CLEAR_RADIUS = 0.01;
+    /** clear_radius's highest value (metres). */
+    constexpr double MAX_CLEAR_RADIUS = 100.0;
 
     /** Where the planner spent its effort (times in seconds). Times, iterations and restarts add
         up over the solve() calls since the last clear(); the collision query counts are those of
@@ -37,9 +44,11 @@ namespace ompl_mm
         double connectTime{0.0};    ///< collision-checked walks along propagated trajectories
         double smoothingTime{0.0};  ///< simplifying the solution (ManipulationSimplifier)
         double ikTime{0.0};  ///< inverse kinematics of primitives and grasp samples (part of the times above)
-        std::uint64_t iterations{0};        ///< iterations of the search loop, one sample each
-        std::uint64_t restarts{0};          ///< times the trees were cleared (see MOPL::setRestartIterations)
-        std::uint64_t collisionQueries{0};  ///< state validity queries (of a ManipulationValidityChecker)
+        std::uint64_t iterations{0};  ///< iterations of the search loop, one sample each
+        std::uint64_t restarts{0};    ///< times the trees were cleared (see MOPL::setRestartIterations)
+        std::uint64_t clearings{
+            0};  ///< objects in the way the start tree tried to push aside (clear_probability)
+        std::uint64_t collisionQueries{0};      ///< state validity queries (of a ManipulationValidityChecker)
         std::uint64_t freeCollisionQueries{0};  ///< those that found the state valid
     };
 
@@ -55,7 +64,14 @@ namespace ompl_mm
         weights (robot_weight, joint_weight, base_joint_weight, tool_weight, rotation_weight,
        moving_object_penalty, move_to_object_penalty, move_to_object_factor, contact_distance) and the
        sampler's probabilities (object_sample_probability, undefined_probability, start_value_probability,
-        random_robot_probability, each in [0, 1]).
+        random_robot_probability, each in [0, 1], and any_object_probability, in
+        [MIN_ANY_OBJECT_PROBABILITY, 1]; see ModalSampler) and the clearing of
+        objects in the way (clear_probability, clear_radius).
+
+        Clearing: when an object stops a motion of the start tree, the planner pushes it, with probability
+       clear_probability, to a random place at most clear_radius away on its surface (robot back where it
+       was), as an extension from where the motion stopped, and then tries the motion's target again from
+       there. Searches in rooms full of objects that stand in the way need it; it is off by default.
 
         @par External documentation
         S. Jentzsch, A. Gaschler, O. Khatib, A. Knoll, "MOPL: A multi-modal path planner for generic
@@ -101,6 +117,17 @@ namespace ompl_mm
         void setRestartIterations(unsigned int iterations) { restartIterations_ = iterations; }
         /** Iterations of the first run before a restart; 0 when the planner never restarts. */
         unsigned int getRestartIterations() const { return restartIterations_; }
+        /** Probability of pushing aside an object that stops a motion of the start tree (see the
+            class); 0 (never) by default.
+            @throws ompl::Exception outside [0, 1]. */
+        void setClearProbability(double probability);
+        /** Probability of pushing aside an object in the way. */
+        double getClearProbability() const { return clearProbability_; }
+        /** Farthest an object in the way is pushed aside (metres); 1 by default.
+            @throws ompl::Exception outside [MIN_CLEAR_RADIUS, MAX_CLEAR_RADIUS]. */
+        void setClearRadius(double radius);
+        /** Farthest an object in the way is pushed aside (metres). */
+        double getClearRadius() const { return clearRadius_; }
         /** Random windows of the solution that ManipulationSimplifier tries to replan; 30 by default. */
         void setSmoothingAttempts(unsigned int attempts) { smoothingAttempts_ = attempts; }
         /** Random windows of the solution that ManipulationSimplifier tries to replan. */
@@ -137,9 +164,12 @@ namespace ompl_mm
         /** Outcome of one tree extension. */
         struct Extension
         {
-            int last{-1};         ///< last vertex added, or the vertex equal to the target
-            bool reached{false};  ///< the tree now contains the target state
+            int last{-1};            ///< last vertex added, or the vertex equal to the target
+            bool reached{false};     ///< the tree now contains the target state
+            int blockingObject{-1};  ///< the object that stopped the walk (SweepCheck::blockingObject)
         };
+        /** Random places tried for an object pushed aside before giving up (off its surface). */
+        static constexpr unsigned int CLEAR_PLACE_ATTEMPTS = 20;
 
         void declareParameters();
         /** Nearest vertex of tree to sample; for the goal tree a completed goal state competes and
@@ -147,6 +177,13 @@ namespace ompl_mm
         int nearest(ManipulationTree &tree, PartialState &sample, bool *newRoot);
         Extension extend(ManipulationTree &tree, int near, const ompl::base::State *target);
         Extension walk(ManipulationTree &tree, int near, const Trajectory &trajectory);
+        /** Extends tree from vertex from towards the object pushed to a random place within the
+            clear radius (target: scratch space); an empty extension when no place fits. */
+        Extension clearWay(ManipulationTree &tree, int from, unsigned int object, ompl::base::State *target);
+        /** After an extension from near that an object stopped: clears the object out of the way and
+            extends towards target again; the extension that got farthest. */
+        Extension clearAndRetry(ManipulationTree &tree, int near, const Extension &stopped,
+                                const ompl::base::State *target, ompl::base::State *scratch);
         double segmentLength(const ompl::base::State *a, const ompl::base::State *b) const;
         /** Builds, smooths and records the solution through forward vertex f and goal vertex g. */
         void addSolution(int f, int g, const ompl::base::PlannerTerminationCondition &ptc);
@@ -179,6 +216,8 @@ namespace ompl_mm
         double vertexStep_{0.35};
         unsigned int smoothingAttempts_{30};
         unsigned int restartIterations_{10000};
+        double clearProbability_{0.0};
+        double clearRadius_{1.0};
         MOPLStatistics statistics_;
     };
 }  // namespace ompl_mm

@@ -26,7 +26,6 @@ namespace ompl_mm
             ompl::base::State *state;  ///< owned by the tree
             int parent;                ///< -1 for a root
             SegmentLabel label;        ///< of the edge between parent and this vertex
-            MetricPoint point;         ///< the metric's quantities of state
             std::size_t group;         ///< index of its object configuration
         };
 
@@ -78,10 +77,11 @@ namespace ompl_mm
         /** Extends bounds by a vertex with its packed data (ManipulationMetric::packVertex). */
         void extendBounds(Bounds bounds, const MetricPoint &point, const double *packed);
 
-        /** Vertices sharing one object configuration. */
+        /** Vertices sharing one object configuration: the metric's quantities of their robots
+            are packed, those of their objects kept once. */
         struct Group
         {
-            int first;  ///< a member, whose point holds the objects
+            MetricPoint objects;  ///< the metric's quantities of its first member
             std::vector<int> members;
             std::vector<double> packed;  ///< ManipulationMetric::packVertex of the members, in order
             Bounds bounds;
@@ -104,6 +104,7 @@ namespace ompl_mm
         mutable std::vector<ManipulationMetric::ObjectCost> groupCosts_;
         mutable std::vector<double> groupBounds_;
         mutable ManipulationMetric::LegPlan legPlan_;  ///< of the group being scanned
+        MetricPoint point_;                            ///< of the vertex being added
         std::size_t roots_{0};
     };
 }  // namespace ompl_mm

@@ -5,6 +5,8 @@
 
 #include <ompl/util/RandomNumbers.h>
 
+#include <vector>
+
 namespace ompl_mm
 {
     /** MOPL's sampling of partially defined configurations (paper, section III-B.2; cited at
@@ -15,7 +17,15 @@ namespace ompl_mm
        each left undefined, set to their start value, or set to their goal value; otherwise the robot is
        sampled (uniformly, or at the far end of the search: the goal pose for the forward tree, the start pose
        for the backward tree) and the objects are chosen the same way. A goal value the goal does not define
-       is left undefined. */
+       is left undefined.
+
+       Objects in play: those the goal constrains and those a tree vertex has moved from their
+       start (noteVertex). An object
+       sample picks among the objects in play, or with Probabilities::anyObject among all objects
+       (always, while every object is in play or none is); an object not in play stands at its
+       start in every vertex, so samples set it there (and so do the goal roots made from them,
+       which would otherwise scatter it). So objects that do not matter to the task cost the search
+       little, and every object keeps a chance to be sampled. */
     class ModalSampler
     {
     public:
@@ -27,6 +37,8 @@ namespace ompl_mm
             double undefined{0.4};    ///< leave a part undefined
             double startValue{0.3};   ///< set a part to its start value (the rest: goal value)
             double randomRobot{0.8};  ///< a sampled robot is uniform (else the far end's pose)
+            double anyObject{
+                1.0};  ///< an object sample picks among all objects (else among those in play); > 0
         };
 
         /** A sampler for the problem of goal, with the paper's probabilities. It copies start (the
@@ -48,7 +60,15 @@ namespace ompl_mm
         /** Draws a partial sample for the forward (start) or backward (goal) tree into out. */
         void sample(PartialState &out, bool forwardTree, ompl::RNG &rng) const;
 
+        /** Puts in play the objects that state (a new tree vertex) has moved from their start. */
+        void noteVertex(const ompl::base::State *state);
+        /** True when the object is in play. */
+        bool inPlay(unsigned int object) const { return inPlay_[object] != 0; }
+
     private:
+        void putInPlay(unsigned int object);
+        /** The object of an object sample. */
+        unsigned int chooseObject(ompl::RNG &rng) const;
         /** Sets one part (0 robot, 1 + i object i) to undefined, its start or its goal value. */
         void chooseFixedValue(PartialState &out, unsigned int part, ompl::RNG &rng) const;
         /** Samples the object on a surface or, when enabled, in a region; true when in a region. */
@@ -61,5 +81,7 @@ namespace ompl_mm
         ompl::base::State *goalState_;
         Probabilities probabilities_;
         bool sampleInAir_{false};
+        std::vector<char> inPlay_;                 ///< per object
+        std::vector<unsigned int> inPlayObjects_;  ///< the objects in play, in the order put in play
     };
 }  // namespace ompl_mm

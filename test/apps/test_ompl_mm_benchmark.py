@@ -19,7 +19,7 @@ RUN_LIMIT_S = 600  # every command is bounded, so a hang fails a check instead o
 
 # the run properties of the Table I (MOPL) and of the physics paper, as database columns
 MOPL_COLUMNS = ["time_sampling_s", "time_nearest_s", "time_propagate_s", "time_connect_s", "time_ik_s",
-                "time_smoothing_s", "iterations", "restarts", "tree_vertices", "tree_edges",
+                "time_smoothing_s", "iterations", "restarts", "clearings", "tree_vertices", "tree_edges",
                 "collision_queries", "collision_queries_free", "path_vertices", "path_length_m",
                 "primitives_transit", "primitives_push", "primitives_pickup", "primitives_transfer", "seed"]
 PHYSICS_COLUMNS = ["action", "power", "smoothness", "substeps", "propagations", "reaches_goal", "seed"]

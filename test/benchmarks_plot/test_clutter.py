@@ -84,12 +84,22 @@ class ClutterScenes(unittest.TestCase):
         out = os.path.join(ARGS.scratch, "clutter.md")
         run = subprocess.run([sys.executable, os.path.join(BENCHMARKS, "clutter.py"), "--scene", self.base,
                               "--counts", "0", "2", "--placements", "1", "--seeds", "1", "--time-limit", "0.5",
-                              "--binary", ARGS.mm_plan, "--out", ARGS.scratch, "--markdown", out],
+                              "--binary", ARGS.mm_plan, "--out", ARGS.scratch, "--markdown", out,
+                              "--param", "clear_probability=1"],
                              capture_output=True, text=True, timeout=300)
         self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn("clear_probability=1", text(out).splitlines()[0])
         rows = [line for line in text(out).splitlines() if line.startswith(("| 0 |", "| 2 |"))]
         self.assertEqual(len(rows), 2)
         self.assertRegex(rows[1], r"\| 2 \| 26 \| [01]/1 \|.* MB \|")
+
+    def test_unknown_planner_parameter_is_rejected(self):
+        run = subprocess.run([sys.executable, os.path.join(BENCHMARKS, "clutter.py"), "--scene", self.base,
+                              "--counts", "0", "--placements", "1", "--seeds", "1", "--binary", ARGS.mm_plan,
+                              "--out", ARGS.scratch, "--param", "no_such_parameter=1"],
+                             capture_output=True, text=True, timeout=60)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("no_such_parameter", run.stderr)
 
     def test_bad_arguments_are_rejected(self):
         run = subprocess.run([sys.executable, os.path.join(BENCHMARKS, "clutter.py"), "--counts", "-1",

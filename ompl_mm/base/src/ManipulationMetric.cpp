@@ -68,10 +68,15 @@ namespace ompl_mm
         point.toolRotation = Eigen::Quaterniond(tool.linear());
         point.objects.resize(space_->objectCount());
         point.yaws.resize(space_->objectCount());
+        point.displaced = 0;
+        const std::vector<MovableObject> &sceneObjects = space_->model()->scene().objects;
         for (unsigned int i = 0; i < space_->objectCount(); ++i)
         {
             point.objects[i] = space_->objectPosition(state, i);
             point.yaws[i] = space_->objectYaw(state, i);
+            const ObjectPose &start = sceneObjects[i].start;
+            if (point.objects[i] != start.position || point.yaws[i] != start.yaw)
+                point.displaced |= std::uint64_t{1} << i;
         }
     }
 
@@ -202,17 +207,16 @@ namespace ompl_mm
                                                                   const Query &query) const
     {
         // raw arrays: a search calls this once per group and query
-        const std::size_t n = objects.objects.size();
         const Eigen::Vector3d *positions = objects.objects.data();
         const Eigen::Vector3d *targets = query.point.objects.data();
         const double *yaws = objects.yaws.data();
         const double *targetYaws = query.point.yaws.data();
-        const char *defined = query.objectDefined.data();
         ObjectCost cost;
-        for (std::size_t i = 0; i < n; ++i)
+        // objects that neither has displaced agree exactly
+        for (std::uint64_t rest = query.definedObjects & (objects.displaced | query.point.displaced);
+             rest != 0; rest &= rest - 1)
         {
-            if (!defined[i])
-                continue;
+            const int i = __builtin_ctzll(rest);
             const Eigen::Vector3d displacement = positions[i] - targets[i];
             if (displacement.cwiseAbs().maxCoeff() > SAME || std::abs(yaws[i] - targetYaws[i]) > SAME)
             {
@@ -228,7 +232,7 @@ namespace ompl_mm
         Query query;
         query.point = to;
         fillToolToObjects(query);
-        query.objectDefined.assign(to.objects.size(), 1);
+        query.definedObjects = allObjects(to.objects.size());
         return distance(from, query, objectCost(from, query));
     }
 
@@ -236,9 +240,10 @@ namespace ompl_mm
     {
         makePoint(sample.state(), query.point);
         fillToolToObjects(query);
-        query.objectDefined.resize(space_->objectCount());
+        query.definedObjects = 0;
         for (unsigned int i = 0; i < space_->objectCount(); ++i)
-            query.objectDefined[i] = sample.objectDefined(i);
+            if (sample.objectDefined(i))
+                query.definedObjects |= std::uint64_t{1} << i;
         query.robotDefined = sample.robotDefined();
         query.sampleIsTarget = sampleIsTarget;
     }

@@ -447,7 +447,7 @@ namespace ompl_mm
                 const bool exact = apart <= 2.0 * SAFE_CLEARANCE;
                 const double d = exact ? distance(pair) : apart;
                 if (d < MIN_CLEARANCE)
-                    return {false, safe};
+                    return {false, safe, blockingObject(pair)};
                 clear = clear && d >= SAFE_CLEARANCE;
                 // stop a safe clearance short of a contact ahead, then close in as far as keeps half
                 // the least clearance (so any part of a motion it accepts passes too)
@@ -479,6 +479,27 @@ namespace ompl_mm
             placeBodies(configurationAt(t));
         }
         return {false, safe};
+    }
+
+    int CollisionWorld::blockingObject(const SweptPair &pair) const
+    {
+        const auto objectOf = [this](const Body *body)
+        {
+            const bool isObject =
+                body >= objectBodies_.data() && body < objectBodies_.data() + objectBodies_.size();
+            return isObject ? body->owner : -1;
+        };
+        const int a = objectOf(pair.a);
+        const int b = objectOf(pair.b);
+        if (a < 0 || b < 0)
+            return std::max(a, b);
+        // two objects: the one in the way is the one that moves less
+        const auto travel = [this](int object)
+        {
+            const BodySweep &sweep = objectSweeps_[static_cast<std::size_t>(object)];
+            return sweep.translation.norm() + sweep.spread;
+        };
+        return travel(a) < travel(b) ? a : b;
     }
 
     std::string CollisionWorld::contactAmong(const double *joints,

@@ -17,6 +17,7 @@ namespace ompl_mm
                 .addNumber("time_ik_s", s.ikTime)
                 .addCount("iterations", s.iterations)
                 .addCount("restarts", s.restarts)
+                .addCount("clearings", s.clearings)
                 .addCount("collision_queries", s.collisionQueries)
                 .addCount("collision_queries_free", s.freeCollisionQueries);
             return stats;

@@ -9,6 +9,7 @@
 #include <ompl/util/String.h>
 #include <ompl/util/Time.h>
 
+#include <boost/math/constants/constants.hpp>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -117,22 +118,29 @@ namespace ompl_mm
         weight("move_to_object_penalty", &ManipulationMetric::Weights::moveToObjectPenalty, "0.:0.1:100.");
         weight("move_to_object_factor", &ManipulationMetric::Weights::moveToObjectFactor, "0.:0.1:100.");
         weight("contact_distance", &ManipulationMetric::Weights::contactDistance, "0.:0.01:10.");
-        auto probability = [this](const std::string &name, double ModalSampler::Probabilities::*field)
+        auto probability =
+            [this](const std::string &name, double ModalSampler::Probabilities::*field, double low = 0.0)
         {
             params().declareParam<double>(
                 name,
-                [this, name, field](double v)
+                [this, name, field, low](double v)
                 {
-                    checkWithin(name, v, 0.0, 1.0);
+                    checkWithin(name, v, low, 1.0);
                     probabilities_.*field = v;
                 },
                 [this, field]() { return probabilities_.*field; });
-            params()[name].setRangeSuggestion("0.:0.05:1.");
+            params()[name].setRangeSuggestion(low == 0.0 ? "0.:0.05:1." : rangeSuggestion(low, 1.0));
         };
         probability("object_sample_probability", &ModalSampler::Probabilities::object);
         probability("undefined_probability", &ModalSampler::Probabilities::undefined);
         probability("start_value_probability", &ModalSampler::Probabilities::startValue);
         probability("random_robot_probability", &ModalSampler::Probabilities::randomRobot);
+        probability("any_object_probability", &ModalSampler::Probabilities::anyObject,
+                    MIN_ANY_OBJECT_PROBABILITY);
+        declareParam<double>("clear_probability", this, &MOPL::setClearProbability,
+                             &MOPL::getClearProbability, "0.:0.05:1.");
+        declareParam<double>("clear_radius", this, &MOPL::setClearRadius, &MOPL::getClearRadius,
+                             rangeSuggestion(MIN_CLEAR_RADIUS, MAX_CLEAR_RADIUS));
     }
 
     void MOPL::setConnectStep(double step)
@@ -147,6 +155,18 @@ namespace ompl_mm
     {
         checkWithin("vertex_step", step, MIN_VERTEX_STEP, MAX_VERTEX_STEP);
         vertexStep_ = step;
+    }
+
+    void MOPL::setClearProbability(double probability)
+    {
+        checkWithin("clear_probability", probability, 0.0, 1.0);
+        clearProbability_ = probability;
+    }
+
+    void MOPL::setClearRadius(double radius)
+    {
+        checkWithin("clear_radius", radius, MIN_CLEAR_RADIUS, MAX_CLEAR_RADIUS);
+        clearRadius_ = radius;
     }
 
     void MOPL::setPrimitives(std::vector<PrimitivePtr> primitives)
@@ -273,6 +293,7 @@ namespace ompl_mm
         if (index < 0 && rootValid)
         {
             index = tree.add(root, -1, {});
+            sampler_->noteVertex(root);
             *newRoot = true;
         }
         space_->freeState(root);
@@ -336,12 +357,14 @@ namespace ompl_mm
                     break;  // the piece's end breaks a rule other than collision: stay
                 if (blocked)
                 {
+                    extension.blockingObject = check.blockingObject;
                     // keep the way to a contact only when it is worth a vertex: a connect step
                     space_->interpolate(from, to, check.safeFraction, to);
                     if (segmentLength(from, to) < connectStep_)
                         break;
                 }
                 extension.last = parent = tree.add(to, parent, label);
+                sampler_->noteVertex(to);
                 std::swap(from, to);
             }
         }
@@ -349,6 +372,48 @@ namespace ompl_mm
         space_->freeState(from);
         space_->freeState(to);
         return extension;
+    }
+
+    MOPL::Extension MOPL::clearWay(ManipulationTree &tree, int from, unsigned int object, ob::State *target)
+    {
+        space_->copyState(target, tree.vertex(from).state);
+        ObjectPose pose = space_->objectPose(target, object);
+        const Scene &scene = space_->model()->scene();
+        const int surface = scene.restingSurface(pose.position);
+        if (surface < 0)
+            return {};
+        const SupportSurface &onto = scene.surfaces[static_cast<std::size_t>(surface)];
+        for (unsigned int attempt = 0; attempt < CLEAR_PLACE_ATTEMPTS; ++attempt)
+        {
+            // uniform in the disc of the clear radius about the object
+            const double r = clearRadius_ * std::sqrt(rng_.uniform01());
+            const double angle =
+                rng_.uniformReal(-boost::math::constants::pi<double>(), boost::math::constants::pi<double>());
+            const double x = pose.position.x() + r * std::cos(angle);
+            const double y = pose.position.y() + r * std::sin(angle);
+            if (!onto.contains(x, y))
+                continue;
+            pose.position.x() = x;
+            pose.position.y() = y;
+            space_->setObjectPose(target, object, pose);
+            return extend(tree, from, target);
+        }
+        return {};
+    }
+
+    MOPL::Extension MOPL::clearAndRetry(ManipulationTree &tree, int near, const Extension &stopped,
+                                        const ob::State *target, ob::State *scratch)
+    {
+        ++statistics_.clearings;
+        const int from = stopped.last >= 0 ? stopped.last : near;
+        const Extension cleared =
+            clearWay(tree, from, static_cast<unsigned int>(stopped.blockingObject), scratch);
+        if (cleared.last < 0 || cleared.last == from)
+            return stopped;
+        if (!cleared.reached)
+            return cleared;
+        const Extension retried = extend(tree, cleared.last, target);
+        return retried.last >= 0 && retried.last != cleared.last ? retried : cleared;
     }
 
     ob::PlannerStatus MOPL::solve(const ob::PlannerTerminationCondition &ptc)
@@ -400,6 +465,7 @@ namespace ompl_mm
 
         PartialState sample(space_);
         PartialState connectTarget(space_);
+        PartialState clearing(space_);
         bool forward = true;
         // restarts cut the heavy tail of the search time; each run may last twice as long as the last
         std::uint64_t allowance = restartIterations_;
@@ -433,7 +499,11 @@ namespace ompl_mm
                     a.removeLast();
                 continue;
             }
-            const Extension grown = extend(a, near, sample.state());
+            Extension grown = extend(a, near, sample.state());
+            // an object stopped the start tree: push it aside, then go on
+            if (a.forward() && grown.blockingObject >= 0 && clearProbability_ > 0.0 &&
+                rng_.uniform01() < clearProbability_)
+                grown = clearAndRetry(a, near, grown, sample.state(), clearing.state());
             if (grown.last < 0 || grown.last == near)
             {
                 if (newRoot)
@@ -534,6 +604,7 @@ namespace ompl_mm
         data.properties["time_ik_s REAL"] = ompl_core::exactText(statistics_.ikTime);
         data.properties["iterations INTEGER"] = std::to_string(statistics_.iterations);
         data.properties["restarts INTEGER"] = std::to_string(statistics_.restarts);
+        data.properties["clearings INTEGER"] = std::to_string(statistics_.clearings);
         data.properties["collision_queries INTEGER"] = std::to_string(statistics_.collisionQueries);
         data.properties["collision_queries_free INTEGER"] = std::to_string(statistics_.freeCollisionQueries);
         // what users mean by a plan's length and size; Benchmark's own "solution length" is the

@@ -40,21 +40,21 @@ namespace ompl_mm
     {
         assert(parent < static_cast<int>(vertices_.size()));
         const int index = static_cast<int>(vertices_.size());
-        Vertex vertex{space_->cloneState(state), parent, label, {}, groups_.size()};
-        metric_->makePoint(vertex.state, vertex.point);
+        Vertex vertex{space_->cloneState(state), parent, label, groups_.size()};
+        metric_->makePoint(vertex.state, point_);
         if (parent < 0 || space_->anyObjectMoves(state, vertices_[parent].state))
-            groups_.push_back({index, {}, {}, newBounds()});
+            groups_.push_back({point_, {}, {}, newBounds()});
         else
             vertex.group = vertices_[parent].group;
         Group &group = groups_[vertex.group];
         group.members.push_back(index);
-        vertices_.push_back(std::move(vertex));
+        vertices_.push_back(vertex);
         // against the group's objects, which the scan uses for all members
         const std::size_t stride = metric_->packedVertexSize();
         group.packed.resize(group.members.size() * stride);
         double *packed = group.packed.data() + group.packed.size() - stride;
-        metric_->packVertex(vertices_.back().point, vertices_[group.first].point, packed);
-        extendBounds(group.bounds, vertices_.back().point, packed);
+        metric_->packVertex(point_, group.objects, packed);
+        extendBounds(group.bounds, point_, packed);
         // a group's members share its objects' configuration: their packed data lie side by side
         assert(group.packed.size() == group.members.size() * stride);
         if (parent < 0)
@@ -156,9 +156,8 @@ namespace ompl_mm
     {
         const Group &group = groups_[g];
         legPlan_.planned = 0;
-        const int m =
-            metric_->nearest(group.packed.data(), group.members.size(), vertices_[group.first].point, query,
-                             groupCosts_[g], legPlan_, bestDistance);
+        const int m = metric_->nearest(group.packed.data(), group.members.size(), group.objects, query,
+                                       groupCosts_[g], legPlan_, bestDistance);
         if (m >= 0)
             *best = group.members[m];
     }
@@ -174,7 +173,7 @@ namespace ompl_mm
         std::size_t first = 0;
         for (std::size_t g = 0; g < groups_.size(); ++g)
         {
-            groupCosts_[g] = metric_->objectCost(vertices_[groups_[g].first].point, query);
+            groupCosts_[g] = metric_->objectCost(groups_[g].objects, query);
             groupBounds_[g] = objectAndRobotBound(g, query);
             if (groupBounds_[g] < groupBounds_[first])
                 first = g;

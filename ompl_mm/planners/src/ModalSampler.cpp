@@ -7,8 +7,38 @@ namespace ompl_mm
         : space_(space),
           goal_(goal),
           start_(space->cloneState(start)),
-          goalState_(space->cloneState(goalState))
+          goalState_(space->cloneState(goalState)),
+          inPlay_(space->objectCount(), 0)
     {
+        for (unsigned int i = 0; i < space->objectCount(); ++i)
+            if (goal->constrainsObject(i))
+                putInPlay(i);
+    }
+
+    void ModalSampler::putInPlay(unsigned int object)
+    {
+        if (inPlay_[object])
+            return;
+        inPlay_[object] = 1;
+        inPlayObjects_.push_back(object);
+    }
+
+    void ModalSampler::noteVertex(const ompl::base::State *state)
+    {
+        // once every object is in play there is nothing left to find
+        for (unsigned int i = 0; i < space_->objectCount() && inPlayObjects_.size() < inPlay_.size(); ++i)
+            if (!inPlay_[i] && space_->objectMoves(state, start_, i))
+                putInPlay(i);
+    }
+
+    unsigned int ModalSampler::chooseObject(ompl::RNG &rng) const
+    {
+        const unsigned int objects = space_->objectCount();
+        const auto inPlay = static_cast<unsigned int>(inPlayObjects_.size());
+        // no draw while the choice is among all objects anyway: the same searches as without play
+        if (inPlay > 0 && inPlay < objects && rng.uniform01() >= probabilities_.anyObject)
+            return inPlayObjects_[static_cast<std::size_t>(rng.uniformInt(0, static_cast<int>(inPlay) - 1))];
+        return static_cast<unsigned int>(rng.uniformInt(0, static_cast<int>(objects) - 1));
     }
 
     ModalSampler::~ModalSampler()
@@ -20,6 +50,14 @@ namespace ompl_mm
     void ModalSampler::chooseFixedValue(PartialState &out, unsigned int part, ompl::RNG &rng) const
     {
         const bool isRobot = part == 0;
+        if (!isRobot && !inPlay_[part - 1])
+        {
+            // where it stands in every vertex; defined, so that goal roots made from the sample
+            // leave it there too
+            out.setObjectDefined(part - 1, true);
+            space_->copyObject(out.state(), start_, part - 1);
+            return;
+        }
         const bool goalDefines = isRobot ? goal_->constrainsRobot() : goal_->constrainsObject(part - 1);
         // a goal value the goal does not define stays undefined
         const double r = rng.uniform01();
@@ -89,8 +127,7 @@ namespace ompl_mm
         const unsigned int objects = space_->objectCount();
         if (objects > 0 && rng.uniform01() < probabilities_.object)
         {
-            const unsigned int chosen =
-                static_cast<unsigned int>(rng.uniformInt(0, static_cast<int>(objects) - 1));
+            const unsigned int chosen = chooseObject(rng);
             out.setGraspedObject(-1);
             if (sampleObject(out, chosen, rng))
             {

@@ -171,6 +171,26 @@ TEST_F(MobileMetric, UndefinedPartsOfAQueryDoNotCount)
     EXPECT_NEAR(metric_.distance(vertex, query, cost), withRobot, 1e-12);
 }
 
+TEST_F(MobileMetric, ObjectCostSeesEveryObjectThatEitherSideDisplaced)
+{
+    // from_ and to_ start at the scene's start; obj1 moves by more than the tolerance (1e-9), obj2
+    // by less, obj3 stands at the same place away from its start on both sides
+    const ObjectPose obj1 = space_.objectPose(from_, 0);
+    const ObjectPose obj2 = space_.objectPose(from_, 1);
+    for (ob::State *displaced : {from_, to_})
+    {
+        space_.copyState(from_, to_);
+        object(displaced, 0, V2(obj1.position.x() + 2e-9, obj1.position.y()));
+        object(displaced, 1, V2(obj2.position.x(), obj2.position.y() + 5e-10));
+        object(from_, 2, V2(0.3, 0.4));
+        object(to_, 2, V2(0.3, 0.4));
+        const ManipulationMetric::ObjectCost cost = queryFromTo();
+        EXPECT_EQ(cost.moving, 1u) << (displaced == from_ ? "vertex" : "query") << " displaced";
+        EXPECT_NEAR(cost.bound, MOVING + 2e-9, 1e-15);
+        space_.copyState(from_, to_);
+    }
+}
+
 TEST_F(MobileMetric, ObjectCostBoundsTheDistance)
 {
     std::mt19937 gen(7);

@@ -281,9 +281,28 @@ TEST_F(MobileSweep, APushKeepsTheRobotJustBehindTheObject)
 {
     // the robot 1 cm behind obj2 (radii 0.2 + 0.2), both moving 0.2 m along +x
     const V2 behind(0.8 - 0.41, -0.1);
-    EXPECT_TRUE(sweep(behind, behind + V2(0.2, 0.0), 1).free);
+    const CollisionWorld::SweepCheck push = sweep(behind, behind + V2(0.2, 0.0), 1);
+    EXPECT_TRUE(push.free);
+    EXPECT_EQ(push.blockingObject, -1);
     // without the object moving, the robot runs into it
-    EXPECT_FALSE(sweep(behind, behind + V2(0.2, 0.0)).free);
+    const CollisionWorld::SweepCheck run = sweep(behind, behind + V2(0.2, 0.0));
+    EXPECT_FALSE(run.free);
+    EXPECT_EQ(run.blockingObject, 1) << "obj2 stopped the robot";
+}
+
+TEST_F(MobileSweep, AnObstacleBlocksWithoutAnObjectToBlame)
+{
+    EXPECT_EQ(sweep(V2(0.0, 0.5), V2(0.0, -1.0)).blockingObject, -1) << "block2's top";
+}
+
+TEST_F(MobileSweep, APushedObjectIsStoppedByTheObjectStandingInItsWay)
+{
+    // obj2 pushed 0.6 m along +x into obj1 standing 0.5 m ahead of it: obj1 is in the way
+    poses_[0].position = poses_[1].position + Eigen::Vector3d(0.5, 0.0, 0.0);
+    const V2 behind(0.8 - 0.41, -0.1);
+    const CollisionWorld::SweepCheck check = sweep(behind, behind + V2(0.6, 0.0), 1);
+    EXPECT_FALSE(check.free);
+    EXPECT_EQ(check.blockingObject, 0);
 }
 
 namespace

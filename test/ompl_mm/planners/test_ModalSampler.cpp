@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 
 using namespace ompl_mm;
 using namespace ompl_mm::test;
@@ -71,9 +72,12 @@ namespace
                                                                    : Fresh;
         }
 
-        Tally run(bool forward, std::uint_fast32_t seed) const
+        Tally run(bool forward, std::uint_fast32_t seed,
+                  const std::function<void(ModalSampler &)> &configure = {}) const
         {
             ModalSampler sampler(&space_, setup_.manipulationGoal().get(), start_, goalState_);
+            if (configure)
+                configure(sampler);
             ompl::RNG rng;
             rng.setLocalSeed(seed);
             PartialState s(&space_);
@@ -177,12 +181,43 @@ TEST_F(Sampler, ObjectsNotSampledFollowTheProbabilities)
     EXPECT_NEAR(rate(obj3[Undefined], t.notSampled[OBJ3]), 0.4, TOLERANCE);
     EXPECT_NEAR(rate(obj3[Start], t.notSampled[OBJ3]), 0.3, TOLERANCE);
     EXPECT_NEAR(rate(obj3[Goal], t.notSampled[OBJ3]), 0.3, TOLERANCE);
-    // obj1 has none: its "goal value" choice leaves it undefined
+    // obj1 has none and no vertex has moved it (not in play): it stays at its start
+    EXPECT_EQ(t.objectNotSampled[OBJ1][Start], t.notSampled[OBJ1]);
+}
+
+TEST_F(Sampler, ObjectsInPlayWithoutGoalAreUndefinedOrAtTheirStart)
+{
+    ob::State *moved = startCopy();
+    setObject(space_, moved, OBJ1, 1.5, -2.0);
+    const Tally t = run(true, 25, [&](ModalSampler &sampler) { sampler.noteVertex(moved); });
+    // obj1's "goal value" choice leaves it undefined
     const auto &obj1 = t.objectNotSampled[OBJ1];
     EXPECT_EQ(obj1[Goal], 0);
     EXPECT_EQ(obj1[Fresh], 0);
     EXPECT_NEAR(rate(obj1[Undefined], t.notSampled[OBJ1]), 0.4 + 0.3, TOLERANCE);
     EXPECT_NEAR(rate(obj1[Start], t.notSampled[OBJ1]), 0.3, TOLERANCE);
+}
+
+TEST_F(Sampler, ObjectsComeIntoPlayWhenAVertexMovesThem)
+{
+    ModalSampler sampler(&space_, setup_.manipulationGoal().get(), start_, goalState_);
+    EXPECT_TRUE(sampler.inPlay(OBJ3)) << "the goal constrains obj3";
+    EXPECT_FALSE(sampler.inPlay(OBJ1));
+    sampler.noteVertex(start_);
+    EXPECT_FALSE(sampler.inPlay(OBJ1)) << "the start moves nothing";
+    ob::State *moved = startCopy();
+    setObject(space_, moved, OBJ1, 1.5, -2.0);
+    sampler.noteVertex(moved);
+    EXPECT_TRUE(sampler.inPlay(OBJ1));
+    EXPECT_FALSE(sampler.inPlay(1)) << "obj2 has not moved";
+}
+
+TEST_F(Sampler, ObjectSamplesFocusOnObjectsInPlay)
+{
+    const Tally t = run(true, 27, [](ModalSampler &sampler) { sampler.probabilities().anyObject = 0.1; });
+    // obj3 alone is in play: 0.9, and a quarter of the 0.1 among all objects
+    EXPECT_NEAR(rate(t.freshObject[OBJ3], t.objectBranch), 0.9 + 0.1 / 4, TOLERANCE);
+    EXPECT_NEAR(rate(t.freshObject[OBJ1], t.objectBranch), 0.1 / 4, TOLERANCE);
 }
 
 TEST_F(Sampler, SameSeedSameSamples)
