@@ -19,10 +19,11 @@ from run_records import check_binary, read_path_file, round_trip_pushes, run_app
 
 
 def same_values(a, b):
-    """True when the two records agree on every key both have, timing values aside (they differ
-    between any two runs; a key only one build writes is a format change, not a result)."""
+    """True when the two records agree on every key both have, timing and memory values aside (they
+    differ between any two runs; a key only one build writes is a format change, not a result)."""
     if isinstance(a, dict) and isinstance(b, dict):
-        return all(same_values(a[k], b[k]) for k in a.keys() & b.keys() if not k.startswith("time"))
+        return all(same_values(a[k], b[k]) for k in a.keys() & b.keys()
+                   if not k.startswith("time") and k != "peak_memory_mb")
     return a == b
 
 

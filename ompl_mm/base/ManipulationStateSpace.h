@@ -27,6 +27,13 @@ namespace ompl_mm
         /** Builds and locks the subspaces for the model's robot and objects; shares the model. */
         explicit ManipulationStateSpace(ManipulationModelPtr model);
 
+        /** A state in one block of memory: OMPL's compound state makes two or three allocations per
+            subspace, and search trees hold many states. Free it with freeState() of this space
+            (never a subspace's freeState() on a component). */
+        ompl::base::State *allocState() const override;
+        /** Frees a state of allocState(). */
+        void freeState(ompl::base::State *state) const override;
+
         /** The problem this space describes. */
         const ManipulationModelPtr &model() const { return model_; }
         /** Number of movable objects. */

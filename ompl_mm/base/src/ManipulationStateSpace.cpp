@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <new>
 
 namespace ob = ompl::base;
 
@@ -22,6 +24,62 @@ namespace ompl_mm
         unsigned int yawIndex(unsigned int object)
         {
             return 2 + 2 * object;
+        }
+
+        using RealVectorState = ob::RealVectorStateSpace::StateType;
+        using AngleState = ob::SO2StateSpace::StateType;
+
+        /** Hands out the parts of one state's block in order, each aligned for any type; with a null
+            block it only counts the bytes. */
+        class BlockCursor
+        {
+        public:
+            explicit BlockCursor(char *block) : block_(block) {}
+            void *take(std::size_t bytes)
+            {
+                void *part = block_ ? block_ + used_ : nullptr;
+                used_ += (bytes + ALIGNMENT - 1) / ALIGNMENT * ALIGNMENT;
+                return part;
+            }
+            std::size_t used() const { return used_; }
+            bool building() const { return block_ != nullptr; }
+
+        private:
+            static constexpr std::size_t ALIGNMENT = alignof(std::max_align_t);
+            char *block_;
+            std::size_t used_{0};
+        };
+
+        /** Lays out a state of a space with `dof` robot coordinates and `objects` objects in cursor's
+            block (the compound, its component pointers, the robot's vector, then per object its
+            position vector and its yaw), constructing the parts when the cursor has a block. */
+        ob::State *layOut(BlockCursor &cursor, unsigned int dof, unsigned int objects)
+        {
+            const bool build = cursor.building();
+            void *compoundPart = cursor.take(sizeof(ManipulationStateSpace::StateType));
+            void *componentsPart = cursor.take(sizeof(ob::State *) * (1 + 2 * objects));
+            auto *state = build ? new (compoundPart) ManipulationStateSpace::StateType() : nullptr;
+            if (build)
+                state->components = static_cast<ob::State **>(componentsPart);
+            const auto vector = [&](unsigned int index, unsigned int size)
+            {
+                void *statePart = cursor.take(sizeof(RealVectorState));
+                void *valuesPart = cursor.take(sizeof(double) * size);
+                if (!build)
+                    return;
+                auto *component = new (statePart) RealVectorState();
+                component->values = static_cast<double *>(valuesPart);
+                state->components[index] = component;
+            };
+            vector(0, dof);
+            for (unsigned int i = 0; i < objects; ++i)
+            {
+                vector(positionIndex(i), 3);
+                void *yawPart = cursor.take(sizeof(AngleState));
+                if (build)
+                    state->components[yawIndex(i)] = new (yawPart) AngleState();
+            }
+            return state;
         }
 
         /** Bounds that enclose every place an object may be: surfaces and sampling regions. */
@@ -77,6 +135,28 @@ namespace ompl_mm
             addSubspace(yaw, 1.0);
         }
         lock();
+    }
+
+    ob::State *ManipulationStateSpace::allocState() const
+    {
+        BlockCursor size(nullptr);
+        layOut(size, robotDimension(), objectCount());
+        BlockCursor cursor(static_cast<char *>(::operator new(size.used())));
+        return layOut(cursor, robotDimension(), objectCount());
+    }
+
+    void ManipulationStateSpace::freeState(ob::State *state) const
+    {
+        auto *compound = state->as<StateType>();
+        for (unsigned int i = 0; i < objectCount(); ++i)
+        {
+            compound->as<RealVectorState>(positionIndex(i))->~RealVectorState();
+            compound->as<AngleState>(yawIndex(i))->~AngleState();
+        }
+        compound->as<RealVectorState>(0)->~RealVectorState();
+        compound->~StateType();
+        // the compound opens its block
+        ::operator delete(static_cast<void *>(compound));
     }
 
     double *ManipulationStateSpace::robotValues(ob::State *state) const

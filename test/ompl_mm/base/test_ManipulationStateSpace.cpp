@@ -57,6 +57,30 @@ TEST_F(MobileSpace, DimensionAndSubspaceNames)
     }
 }
 
+TEST_F(MobileSpace, AStateIsOneBlockOfItsOwn)
+{
+    // every component lies within a few hundred bytes after the compound (one allocation), and
+    // clones have blocks of their own that copy the values
+    ob::State *state = startCopy();
+    const auto *compound = state->as<ManipulationStateSpace::StateType>();
+    const auto *begin = reinterpret_cast<const char *>(compound);
+    for (unsigned int i = 0; i < space_.getSubspaceCount(); ++i)
+    {
+        const auto *component = reinterpret_cast<const char *>(compound->components[i]);
+        EXPECT_GT(component, begin) << i;
+        EXPECT_LT(component, begin + 1024) << i;
+    }
+    const double *robot = space_.robotValues(state);
+    EXPECT_GT(reinterpret_cast<const char *>(robot), begin);
+    EXPECT_LT(reinterpret_cast<const char *>(robot), begin + 1024);
+    ob::State *clone = space_.cloneState(state);
+    EXPECT_TRUE(space_.equalStates(clone, state));
+    space_.setObjectPose(clone, 2, {Eigen::Vector3d(0.5, 0.5, 0.0), 0.25});
+    EXPECT_EQ(space_.objectPosition(state, 2), Eigen::Vector3d(-1.5, -1.5, 0.0)) << "the clone is apart";
+    EXPECT_EQ(space_.objectPose(clone, 2).yaw, 0.25);
+    space_.freeState(clone);
+}
+
 TEST_F(MobileSpace, ScopedStatePrintsObjectNames)
 {
     ob::ScopedState<> state(setup_.getStateSpace());
