@@ -154,15 +154,14 @@ def main():
              "time % nearest / sampling / propagate / connect / smoothing |",
              "|---|---|---|---|---|---|---|---|"]
     print("\n".join(lines), flush=True)
+    options = ("--time-limit", str(args.time_limit), *(o for setting in args.param for o in ("--param", setting)))
     with tempfile.TemporaryDirectory() as workdir:
         for count in args.counts:
             results = []
             for placement in range(1, args.placements + 1):
                 scene, dims = make_scene(args.scene, count, placement, args.robot_radius, args.out)
                 for seed in range(1, args.seeds + 1):
-                    params = [option for setting in args.param for option in ("--param", setting)]
-                    results.append(run_app(args.binary, scene, seed, workdir,
-                                           ("--time-limit", str(args.time_limit), *params)))
+                    results.append(run_app(args.binary, scene, seed, workdir, options))
             lines.append(report(count, dims, results, args.time_limit))
             print(lines[-1], flush=True)
     if args.markdown:

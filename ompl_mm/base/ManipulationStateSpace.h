@@ -6,6 +6,8 @@
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SO2StateSpace.h>
 
+#include <cstddef>
+
 namespace ompl_mm
 {
     /** The configuration space of a manipulation problem: the robot's joints times one upright pose
@@ -106,6 +108,7 @@ namespace ompl_mm
         bool isCarried(const ompl::base::State *from, const ompl::base::State *to, unsigned int object) const;
 
         ManipulationModelPtr model_;
+        std::size_t stateBytes_{0};  ///< the size of a state's block (allocState), fixed by the subspaces
     };
 
     /** Shared ownership of a ManipulationStateSpace, as OMPL passes state spaces around. */

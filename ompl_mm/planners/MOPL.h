@@ -46,8 +46,8 @@ namespace ompl_mm
         double ikTime{0.0};  ///< inverse kinematics of primitives and grasp samples (part of the times above)
         std::uint64_t iterations{0};  ///< iterations of the search loop, one sample each
         std::uint64_t restarts{0};    ///< times the trees were cleared (see MOPL::setRestartIterations)
-        std::uint64_t clearings{
-            0};  ///< objects in the way the start tree tried to push aside (clear_probability)
+        /** objects in the way the start tree tried to push aside (clear_probability) */
+        std::uint64_t clearings{0};
         std::uint64_t collisionQueries{0};      ///< state validity queries (of a ManipulationValidityChecker)
         std::uint64_t freeCollisionQueries{0};  ///< those that found the state valid
     };

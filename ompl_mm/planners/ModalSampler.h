@@ -37,8 +37,8 @@ namespace ompl_mm
             double undefined{0.4};    ///< leave a part undefined
             double startValue{0.3};   ///< set a part to its start value (the rest: goal value)
             double randomRobot{0.8};  ///< a sampled robot is uniform (else the far end's pose)
-            double anyObject{
-                1.0};  ///< an object sample picks among all objects (else among those in play); > 0
+            /** an object sample picks among all objects (else among those in play); > 0 */
+            double anyObject{1.0};
         };
 
         /** A sampler for the problem of goal, with the paper's probabilities. It copies start (the

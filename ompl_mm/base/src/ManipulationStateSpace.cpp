@@ -135,13 +135,14 @@ namespace ompl_mm
             addSubspace(yaw, 1.0);
         }
         lock();
+        BlockCursor size(nullptr);
+        layOut(size, robotDimension(), objectCount());
+        stateBytes_ = size.used();
     }
 
     ob::State *ManipulationStateSpace::allocState() const
     {
-        BlockCursor size(nullptr);
-        layOut(size, robotDimension(), objectCount());
-        BlockCursor cursor(static_cast<char *>(::operator new(size.used())));
+        BlockCursor cursor(static_cast<char *>(::operator new(stateBytes_)));
         return layOut(cursor, robotDimension(), objectCount());
     }
 
