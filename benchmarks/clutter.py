@@ -8,9 +8,8 @@ planned over several seeds, one ompl_mm_plan process per run; the report gives p
 the median, mean and max planning time, the peak memory of the process and where the time went.
 Standard library only.
 
-Example (the generated scenes go to out/clutter/; MOPL pushes objects in the way aside):
-  benchmarks/clutter.py --counts 0 4 8 12 16 --placements 2 --seeds 5 --param clear_probability=1 \
-      --markdown out/clutter.md
+Example (the generated scenes go to out/clutter/; without clearing: --param clear_probability=0):
+  benchmarks/clutter.py --counts 0 4 8 12 16 --placements 2 --seeds 5 --markdown out/clutter.md
 """
 import argparse
 import math

@@ -66,12 +66,15 @@ namespace ompl_mm
        sampler's probabilities (object_sample_probability, undefined_probability, start_value_probability,
         random_robot_probability, each in [0, 1], and any_object_probability, in
         [MIN_ANY_OBJECT_PROBABILITY, 1]; see ModalSampler) and the clearing of
-        objects in the way (clear_probability, clear_radius).
+        objects in the way (clear_probability, clear_radius, clear_min_free_objects).
 
         Clearing: when an object stops a motion of the start tree, the planner pushes it, with probability
-       clear_probability, to a random place at most clear_radius away on its surface (robot back where it
-       was), as an extension from where the motion stopped, and then tries the motion's target again from
-       there. Searches in rooms full of objects that stand in the way need it; it is off by default.
+        clear_probability, to a random place at most clear_radius away on its surface (robot back where it
+        was), as an extension from where the motion stopped, and then tries the motion's target again from
+        there. It is used when the goal leaves at least clear_min_free_objects objects free: among
+        many objects the sampler rarely picks the one in the way, and clearing is what gets through;
+        among few it picks each often, and clearing only scatters the objects that the goal tree's
+        layouts must match.
 
         @par External documentation
         S. Jentzsch, A. Gaschler, O. Khatib, A. Knoll, "MOPL: A multi-modal path planner for generic
@@ -118,7 +121,7 @@ namespace ompl_mm
         /** Iterations of the first run before a restart; 0 when the planner never restarts. */
         unsigned int getRestartIterations() const { return restartIterations_; }
         /** Probability of pushing aside an object that stops a motion of the start tree (see the
-            class); 0 (never) by default.
+            class); 1 by default (0 never clears).
             @throws ompl::Exception outside [0, 1]. */
         void setClearProbability(double probability);
         /** Probability of pushing aside an object in the way. */
@@ -128,6 +131,11 @@ namespace ompl_mm
         void setClearRadius(double radius);
         /** Farthest an object in the way is pushed aside (metres). */
         double getClearRadius() const { return clearRadius_; }
+        /** Clearing is used only when the goal leaves at least this many objects free (see the
+            class); 4 by default, 0 clears in every scene. */
+        void setClearMinFreeObjects(unsigned int objects) { clearMinFreeObjects_ = objects; }
+        /** Objects the goal must leave free for clearing to be used. */
+        unsigned int getClearMinFreeObjects() const { return clearMinFreeObjects_; }
         /** Random windows of the solution that ManipulationSimplifier tries to replan; 30 by default. */
         void setSmoothingAttempts(unsigned int attempts) { smoothingAttempts_ = attempts; }
         /** Random windows of the solution that ManipulationSimplifier tries to replan. */
@@ -180,6 +188,8 @@ namespace ompl_mm
         /** Extends tree from vertex from towards the object pushed to a random place within the
             clear radius (target: scratch space); an empty extension when no place fits. */
         Extension clearWay(ManipulationTree &tree, int from, unsigned int object, ompl::base::State *target);
+        /** Objects the goal leaves free (clear_min_free_objects compares with it). */
+        unsigned int freeObjectCount() const;
         /** After an extension from near that an object stopped: clears the object out of the way and
             extends towards target again; the extension that got farthest. */
         Extension clearAndRetry(ManipulationTree &tree, int near, const Extension &stopped,
@@ -216,8 +226,9 @@ namespace ompl_mm
         double vertexStep_{0.35};
         unsigned int smoothingAttempts_{30};
         unsigned int restartIterations_{10000};
-        double clearProbability_{0.0};
+        double clearProbability_{1.0};
         double clearRadius_{1.0};
+        unsigned int clearMinFreeObjects_{4};
         MOPLStatistics statistics_;
     };
 }  // namespace ompl_mm

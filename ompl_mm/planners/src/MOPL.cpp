@@ -141,6 +141,8 @@ namespace ompl_mm
                              &MOPL::getClearProbability, "0.:0.05:1.");
         declareParam<double>("clear_radius", this, &MOPL::setClearRadius, &MOPL::getClearRadius,
                              rangeSuggestion(MIN_CLEAR_RADIUS, MAX_CLEAR_RADIUS));
+        declareParam<unsigned int>("clear_min_free_objects", this, &MOPL::setClearMinFreeObjects,
+                                   &MOPL::getClearMinFreeObjects, "0:1:100");
     }
 
     void MOPL::setConnectStep(double step)
@@ -416,6 +418,14 @@ namespace ompl_mm
         return retried.last >= 0 && retried.last != cleared.last ? retried : cleared;
     }
 
+    unsigned int MOPL::freeObjectCount() const
+    {
+        unsigned int free = 0;
+        for (unsigned int i = 0; i < space_->objectCount(); ++i)
+            free += goal_->constrainsObject(i) ? 0 : 1;
+        return free;
+    }
+
     ob::PlannerStatus MOPL::solve(const ob::PlannerTerminationCondition &ptc)
     {
         checkValidity();
@@ -466,6 +476,7 @@ namespace ompl_mm
         PartialState sample(space_);
         PartialState connectTarget(space_);
         PartialState clearing(space_);
+        const bool clears = clearProbability_ > 0.0 && freeObjectCount() >= clearMinFreeObjects_;
         bool forward = true;
         // restarts cut the heavy tail of the search time; each run may last twice as long as the last
         std::uint64_t allowance = restartIterations_;
@@ -501,8 +512,7 @@ namespace ompl_mm
             }
             Extension grown = extend(a, near, sample.state());
             // an object stopped the start tree: push it aside, then go on
-            if (a.forward() && grown.blockingObject >= 0 && clearProbability_ > 0.0 &&
-                rng_.uniform01() < clearProbability_)
+            if (clears && a.forward() && grown.blockingObject >= 0 && rng_.uniform01() < clearProbability_)
                 grown = clearAndRetry(a, near, grown, sample.state(), clearing.state());
             if (grown.last < 0 || grown.last == near)
             {

@@ -210,7 +210,8 @@ TEST(MOPL, DeclaresEveryTunableParameter)
          {"connect_step", "vertex_step", "smoothing_attempts", "restart_iterations", "robot_weight",
           "moving_object_penalty", "move_to_object_penalty", "move_to_object_factor", "contact_distance",
           "object_sample_probability", "undefined_probability", "start_value_probability",
-          "random_robot_probability", "any_object_probability", "clear_probability", "clear_radius"})
+          "random_robot_probability", "any_object_probability", "clear_probability", "clear_radius",
+          "clear_min_free_objects"})
         EXPECT_TRUE(setup.mopl()->params().hasParam(name)) << name;
     EXPECT_EQ(setup.mopl()->params().getParam("vertex_step")->getValue(), "0.35") << "set by the scene";
     EXPECT_THROW(setup.mopl()->params().setParam("connect_step", "-1"), std::runtime_error);
@@ -218,13 +219,20 @@ TEST(MOPL, DeclaresEveryTunableParameter)
     EXPECT_THROW(setup.mopl()->params().setParam("vertex_step", "abc"), std::runtime_error);
 }
 
-TEST(MOPL, NoClearingByDefault)
+TEST(MOPL, ClearsOnlyWhenTheGoalLeavesEnoughObjectsFree)
 {
+    // MOBILE BLOCKED's goal leaves three of its four objects free: below the default of four
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-    ManipulationSetup setup(mobileBlockedScene());
-    setup.mopl()->setSeed(1);
-    ASSERT_EQ(boundedSolve(setup), ompl::base::PlannerStatus::EXACT_SOLUTION);
-    EXPECT_EQ(setup.mopl()->statistics().clearings, 0u);
+    auto clearings = [](unsigned int minFreeObjects)
+    {
+        ManipulationSetup setup(mobileBlockedScene());
+        setup.mopl()->setSeed(1);
+        setup.mopl()->setClearMinFreeObjects(minFreeObjects);
+        EXPECT_EQ(boundedSolve(setup), ompl::base::PlannerStatus::EXACT_SOLUTION) << minFreeObjects;
+        return setup.mopl()->statistics().clearings;
+    };
+    EXPECT_EQ(clearings(4), 0u);
+    EXPECT_GT(clearings(3), 0u);
 }
 
 TEST(MOPL, RestartsClearTheTreesAndStillSolve)
@@ -309,7 +317,10 @@ TEST(MOPLParameters, ObjectsOutOfPlayKeepAChanceAndClearingHasItsRanges)
     EXPECT_TRUE(params.setParam("any_object_probability", "0.01"));
     EXPECT_EQ(params.getParam("any_object_probability")->getRangeSuggestion(), "0.01:0.01:1");
 
-    EXPECT_EQ(setup.mopl()->getClearProbability(), 0.0) << "off by default";
+    EXPECT_EQ(setup.mopl()->getClearProbability(), 1.0);
+    EXPECT_EQ(setup.mopl()->getClearMinFreeObjects(), 4u);
+    EXPECT_TRUE(params.setParam("clear_min_free_objects", "0"));
+    EXPECT_EQ(setup.mopl()->getClearMinFreeObjects(), 0u);
     EXPECT_EQ(ompl_core::test::exceptionOf([&] { params.setParam("clear_probability", "1.5"); }),
               "MOPL: clear_probability must be in [0, 1], got 1.5");
     EXPECT_EQ(setup.mopl()->getClearRadius(), 1.0);
@@ -328,7 +339,7 @@ TEST(MOPL, ClearingPushesObjectsInTheWayAsideAndStillSolves)
     {
         ManipulationSetup setup(scene);
         setup.mopl()->setSeed(seed);
-        setup.mopl()->setClearProbability(1.0);
+        setup.mopl()->setClearMinFreeObjects(0);
         ASSERT_EQ(boundedSolve(setup), ompl::base::PlannerStatus::EXACT_SOLUTION) << seed;
         EXPECT_GT(setup.mopl()->statistics().clearings, 0u) << seed;
         const ManipulationPath &path = setup.manipulationPath();
