@@ -5,6 +5,8 @@
 // come from a random walk of the robot from the scene's start, so they include pushes and contacts.
 // Usage: bench_propagation SCENE.xml... [--steps N] [--repeats R]   (default: 2000 steps, best of 5
 // repeats). Exit status: 0 done, 2 bad input.
+#include "SceneFilesCommandLine.h"
+
 #include "ompl_core/io/InputError.h"
 #include "ompl_core/run/ExitStatus.h"
 #include "ompl_phys/control/PhysicsSetup.h"
@@ -123,27 +125,17 @@ namespace
             "(state, control) pairs of the random walk, each propagated once per repeat (at least 1)")(
             "repeats", po::value(&options.repeats)->default_value(options.repeats)->value_name("R"),
             "repeats of the timing; the best counts (at least 1)");
-        po::options_description hidden;
-        hidden.add_options()("scene", po::value(&options.scenes));
-        po::options_description all;
-        all.add(named).add(hidden);
-        po::positional_options_description positionals;
-        positionals.add("scene", -1);
-        po::variables_map vm;
-        po::store(po::command_line_parser(argc, argv).options(all).positional(positionals).run(), vm);
-        po::notify(vm);
-        if (vm.count("help"))
+        if (!benchmarks::parseSceneFilesCommandLine(
+                argc, argv, named,
+                "Usage: bench_propagation SCENE.xml... [options]\n"
+                "Time per ODE sub-step of PhysicsStatePropagator against a bare ODE loop on the "
+                "same states and\nforces, per physics scene (a random walk of its robot).\n"
+                "Exit status: 0 done, 2 bad input.",
+                options.scenes))
         {
-            std::cout << "Usage: bench_propagation SCENE.xml... [options]\n"
-                         "Time per ODE sub-step of PhysicsStatePropagator against a bare ODE loop on the "
-                         "same states and\nforces, per physics scene (a random walk of its robot).\n"
-                         "Exit status: 0 done, 2 bad input.\n\n"
-                      << named;
             exitCode = 0;
             return false;
         }
-        if (options.scenes.empty())
-            throw po::error("no scene file given");
         if (options.steps < 1)
             throw ompl_core::InputError("--steps must be at least 1, got " + std::to_string(options.steps));
         if (options.repeats < 1)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ompl_phys/base/PhysicsStateSpace.h"
+#include "ompl_phys/control/SpeedGovernor.h"
 #include "ompl_phys/knowledge/ManipulationKnowledge.h"
 #include "ompl_phys/world/PhysicsWorld.h"
 
@@ -52,6 +53,11 @@ namespace ompl_phys
         /** OMPL's hook: false, physics runs forward only. */
         bool canPropagateBackward() const override { return false; }
 
+        /** The impulse the robot's drive applied in the last propagate() call (the sum of the
+            applied force times the sub-step), N·s: the control's force times the duration unless
+            the speed limit held the drive back (SpeedGovernor). */
+        const Eigen::Vector2d &lastImpulse() const { return impulse_; }
+
         /** The counts since construction or resetCounters(). */
         const Counters &counters() const { return counters_; }
         /** Sets every count to 0. */
@@ -64,9 +70,11 @@ namespace ompl_phys
         const PhysicsStateSpace &space_;
         std::shared_ptr<PhysicsWorld> world_;
         std::shared_ptr<const ManipulationKnowledge> knowledge_;
+        SpeedGovernor governor_;
         double stepSize_;
         unsigned int substepsPerStep_;
         mutable BodyStates states_;
+        mutable Eigen::Vector2d impulse_{Eigen::Vector2d::Zero()};
         mutable Counters counters_;
     };
 }  // namespace ompl_phys

@@ -6,6 +6,9 @@
 
 namespace ompl_phys
 {
+    /** OMPL's bounds of a region of the floor (x, y), as a grid decomposition over it needs. */
+    ompl::base::RealVectorBounds floorBounds(const Eigen::AlignedBox2d &region);
+
     /** The workspace decomposition SyclopRRT and SyclopEST plan their leads over: a grid of
         cellsPerSide x cellsPerSide cells over the robot's region, locating a state by the robot's
         position. A full state for a grid point is a state-sampler sample with the robot moved there. */

@@ -10,8 +10,10 @@ namespace ompl_phys
     /** One move of a control path: a constant force applied for a whole number of propagation steps. */
     struct RobotMove
     {
-        Eigen::Vector3d force{Eigen::Vector3d::Zero()};  ///< applied force, N, world frame
-        std::size_t steps{0};                            ///< duration in propagation steps (>= 1)
+        /** force applied on average over the move, N, world frame: the control's force, unless the
+            robot's drive held it back at the speed limit (simulatePath) */
+        Eigen::Vector3d force{Eigen::Vector3d::Zero()};
+        std::size_t steps{0};  ///< duration in propagation steps (>= 1)
     };
 
     /** The robot centre sampled every stepDuration seconds along a control path. */

@@ -101,9 +101,9 @@ namespace ompl_phys
     {
         Eigen::AlignedBox2d robotRegion;   ///< where the robot centre may be (world x, y, m)
         Eigen::AlignedBox2d bodyRegion;    ///< where movable body centres may be (world x, y, m)
-        double maxRobotSpeed{1.0};         ///< m/s, each horizontal velocity component of the robot
-        double maxBodySpeed{5.0};          ///< m/s, any linear velocity component of a movable body
-        double maxAngularSpeed{100.0};     ///< rad/s, any angular velocity component (divergence guard)
+        double maxRobotSpeed{1.0};         ///< m/s, the robot's horizontal speed (norm of its velocity)
+        double maxBodySpeed{5.0};          ///< m/s, a movable body's speed (norm of its linear velocity)
+        double maxAngularSpeed{100.0};     ///< rad/s, norm of any angular velocity (divergence guard)
         double maxForce{10.0};             ///< N, each control component
         double stepSize{0.07};             ///< s, propagation step
         unsigned int minControlSteps{1};   ///< shortest control duration, in steps

@@ -43,13 +43,12 @@ namespace ompl_phys
                 throw ompl::Exception("simulatePath", "control " + std::to_string(i) + " lasts " +
                                                           std::to_string(path.getControlDuration(i)) +
                                                           " s, not a whole number of steps");
-            const double *force =
-                path.getControl(i)->as<ompl::control::RealVectorControlSpace::ControlType>()->values;
             RobotMove move;
-            move.force = Eigen::Vector3d(force[0], force[1], 0.0);
+            Eigen::Vector2d impulse = Eigen::Vector2d::Zero();
             for (std::size_t k = 0; k < static_cast<std::size_t>(steps); ++k)
             {
                 si->getStatePropagator()->propagate(current.get(), path.getControl(i), step, next.get());
+                impulse += setup.propagator().lastImpulse();
                 record(next.get());
                 ++move.steps;
                 current = next;
@@ -59,6 +58,9 @@ namespace ompl_phys
                 if (simulated.violation != Violation::None)
                     break;
             }
+            // the force the drive applied on average, which the speed limit may have held back
+            const Eigen::Vector2d force = impulse / (static_cast<double>(move.steps) * step);
+            move.force = Eigen::Vector3d(force.x(), force.y(), 0.0);
             simulated.robot.moves.push_back(move);
         }
         simulated.metrics = computeTrajectoryMetrics(simulated.robot);

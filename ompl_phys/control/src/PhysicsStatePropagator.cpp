@@ -17,6 +17,7 @@ namespace ompl_phys
           space_(*si->getStateSpace()->as<PhysicsStateSpace>()),
           world_(std::move(world)),
           knowledge_(std::move(knowledge)),
+          governor_(world_->scene()),
           stepSize_(world_->scene().limits.stepSize),
           substepsPerStep_(world_->scene().contact.substeps)
     {
@@ -27,12 +28,14 @@ namespace ompl_phys
                                            ompl::base::State *result) const
     {
         ++counters_.propagations;
+        impulse_.setZero();
         if (state->as<PhysicsStateSpace::StateType>()->violation != Violation::None)
         {
             space_.copyState(result, state);  // a broken state stays broken
             return;
         }
-        const double *force = control->as<ompl::control::RealVectorControlSpace::ControlType>()->values;
+        const double *values = control->as<ompl::control::RealVectorControlSpace::ControlType>()->values;
+        const Eigen::Vector2d commanded(values[0], values[1]);
         const auto substeps = static_cast<unsigned int>(
             std::max(1.0, std::round(duration / stepSize_ * static_cast<double>(substepsPerStep_))));
         const double dt = duration / substeps;
@@ -44,7 +47,10 @@ namespace ompl_phys
         Violation violation = Violation::None;
         for (unsigned int k = 0; k < substeps && violation == Violation::None; ++k)
         {
-            world_->step(Eigen::Vector2d(force[0], force[1]), dt);
+            const Eigen::Vector2d applied =
+                governor_.force(commanded, states_[0].linearVelocity.head<2>(), dt);
+            world_->step(applied, dt);
+            impulse_ += applied * dt;
             ++counters_.substeps;
             // the robot's touches were found before the step: judge them at the poses of that moment
             violation = knowledge_->checkTouches(world_->touches(), states_);

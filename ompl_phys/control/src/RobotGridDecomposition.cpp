@@ -2,22 +2,19 @@
 
 namespace ompl_phys
 {
-    namespace
+    ompl::base::RealVectorBounds floorBounds(const Eigen::AlignedBox2d &region)
     {
-        ompl::base::RealVectorBounds regionBounds(const Eigen::AlignedBox2d &region)
-        {
-            ompl::base::RealVectorBounds bounds(2);
-            bounds.setLow(0, region.min().x());
-            bounds.setHigh(0, region.max().x());
-            bounds.setLow(1, region.min().y());
-            bounds.setHigh(1, region.max().y());
-            return bounds;
-        }
-    }  // namespace
+        ompl::base::RealVectorBounds bounds(2);
+        bounds.setLow(0, region.min().x());
+        bounds.setHigh(0, region.max().x());
+        bounds.setLow(1, region.min().y());
+        bounds.setHigh(1, region.max().y());
+        return bounds;
+    }
 
     RobotGridDecomposition::RobotGridDecomposition(std::shared_ptr<const PhysicsStateSpace> space,
                                                    int cellsPerSide)
-        : ompl::control::GridDecomposition(cellsPerSide, 2, regionBounds(space->scene().limits.robotRegion)),
+        : ompl::control::GridDecomposition(cellsPerSide, 2, floorBounds(space->scene().limits.robotRegion)),
           space_(std::move(space))
     {
     }

@@ -18,9 +18,12 @@ namespace ompl_phys
             return a.x() * b.y() - a.y() * b.x();
         }
 
-        bool withinSpeed(const Eigen::Vector3d &velocity, double limit)
+        /** Speed limits bound the norm of a velocity: a bound per component would let a diagonal
+            motion go √3 times as fast. */
+        template <typename Velocity>
+        bool withinSpeed(const Velocity &velocity, double limit)
         {
-            return velocity.cwiseAbs().maxCoeff() <= limit;
+            return velocity.norm() <= limit;
         }
 
         PhysicsScenePtr requireScene(PhysicsScenePtr scene)
@@ -93,7 +96,7 @@ namespace ompl_phys
             if (footprintDistance(scene_->bodies[f.body].shape, f.position, f.yaw, robot.position.head<2>()) <
                 scene_->robot.radius)
                 return Violation::TouchedFixedBody;
-        if (!withinSpeed(robot.linearVelocity, limits.maxRobotSpeed) ||
+        if (!withinSpeed(robot.linearVelocity.head<2>(), limits.maxRobotSpeed) ||
             !withinSpeed(robot.angularVelocity, limits.maxAngularSpeed))
             return Violation::TooFast;
         for (std::size_t i = 0; i < movable_.size(); ++i)

@@ -1,11 +1,14 @@
 #include "ompl_phys/world/PhysicsWorld.h"
 
+#include "ompl_phys/world/OdeGeometry.h"
+
 #include <ode/ode.h>
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <deque>
 #include <mutex>
 
 namespace ompl_phys
@@ -62,9 +65,7 @@ namespace ompl_phys
         dJointGroupID contacts{nullptr};
         std::vector<dBodyID> bodies;  // moving bodies, robot first
         std::vector<GeomTag> tags;    // reserved up front: geoms point into it
-        std::vector<std::array<double, 20>> prismPlanes;
-        std::vector<std::array<double, 18>> prismPoints;
-        std::vector<std::array<unsigned int, 23>> prismPolygons;
+        std::deque<ConvexPrismData> prisms;
 
         ~Handles()
         {
@@ -79,69 +80,6 @@ namespace ompl_phys
 
     namespace
     {
-        /** A static convex prism: the triangle extruded along z, centred at the body frame. */
-        dGeomID createPrism(dSpaceID space, const PhysicsShape &shape, std::array<double, 20> &planes,
-                            std::array<double, 18> &points, std::array<unsigned int, 23> &polygons)
-        {
-            const double h = 0.5 * shape.length;
-            for (int i = 0; i < 3; ++i)
-            {
-                const Eigen::Vector2d c = shape.triangle.col(i);
-                points[3 * i] = points[9 + 3 * i] = c.x();
-                points[3 * i + 1] = points[9 + 3 * i + 1] = c.y();
-                points[3 * i + 2] = h;
-                points[9 + 3 * i + 2] = -h;
-                // side i runs from corner i to corner i+1; counter-clockwise corners put the outside on the
-                // right
-                const Eigen::Vector2d edge = shape.triangle.col((i + 1) % 3) - c;
-                const Eigen::Vector2d normal = Eigen::Vector2d(edge.y(), -edge.x()).normalized();
-                planes[4 * i] = normal.x();
-                planes[4 * i + 1] = normal.y();
-                planes[4 * i + 2] = 0.0;
-                planes[4 * i + 3] = normal.dot(c);
-            }
-            planes[12] = 0.0, planes[13] = 0.0, planes[14] = 1.0, planes[15] = h;
-            planes[16] = 0.0, planes[17] = 0.0, planes[18] = -1.0, planes[19] = h;
-            // faces in plane order (sides, top, bottom); top corners 0-2, bottom 3-5; each face
-            // counter-clockwise seen from outside
-            polygons = {4, 3, 4, 1, 0, 4, 4, 5, 2, 1, 4, 5, 3, 0, 2, 3, 0, 1, 2, 3, 5, 4, 3};
-            return dCreateConvex(space, planes.data(), 5, points.data(), 6, polygons.data());
-        }
-
-        dGeomID createGeom(dSpaceID space, const PhysicsShape &shape)
-        {
-            switch (shape.kind)
-            {
-                case PhysicsShape::Kind::Box:
-                    return dCreateBox(space, shape.boxSize.x(), shape.boxSize.y(), shape.boxSize.z());
-                case PhysicsShape::Kind::Cylinder:
-                    return dCreateCylinder(space, shape.radius, shape.length);
-                case PhysicsShape::Kind::Sphere:
-                case PhysicsShape::Kind::Prism:
-                    break;
-            }
-            return dCreateSphere(space, shape.radius);
-        }
-
-        void setMass(dBodyID body, const PhysicsShape &shape, double mass)
-        {
-            dMass m;
-            switch (shape.kind)
-            {
-                case PhysicsShape::Kind::Box:
-                    dMassSetBoxTotal(&m, mass, shape.boxSize.x(), shape.boxSize.y(), shape.boxSize.z());
-                    break;
-                case PhysicsShape::Kind::Cylinder:
-                    dMassSetCylinderTotal(&m, mass, 3, shape.radius, shape.length);
-                    break;
-                case PhysicsShape::Kind::Sphere:
-                case PhysicsShape::Kind::Prism:
-                    dMassSetSphereTotal(&m, mass, shape.radius);
-                    break;
-            }
-            dBodySetMass(body, &m);
-        }
-
         void placeGeom(dGeomID geom, const Eigen::Isometry3d &pose)
         {
             dMatrix3 rotation;
@@ -165,9 +103,6 @@ namespace ompl_phys
         dWorldSetAutoDisableFlag(h.world, 0);
 
         h.tags.reserve(2 + scene_->bodies.size());
-        h.prismPlanes.reserve(scene_->bodies.size());
-        h.prismPoints.reserve(scene_->bodies.size());
-        h.prismPolygons.reserve(scene_->bodies.size());
         h.tags.push_back({GeomTag::Kind::Floor, 0});
         dGeomSetData(dCreatePlane(h.space, 0.0, 0.0, 1.0, 0.0), &h.tags.back());
 
@@ -188,17 +123,7 @@ namespace ompl_phys
             if (prism && body.kind != BodyKind::Fixed)
                 throw ompl::Exception("PhysicsWorld",
                                       "body '" + body.name + "': a prism can only be a fixed body");
-            dGeomID geom = nullptr;
-            if (prism)
-            {
-                h.prismPlanes.emplace_back();
-                h.prismPoints.emplace_back();
-                h.prismPolygons.emplace_back();
-                geom = createPrism(h.space, body.shape, h.prismPlanes.back(), h.prismPoints.back(),
-                                   h.prismPolygons.back());
-            }
-            else
-                geom = createGeom(h.space, body.shape);
+            dGeomID geom = createShapeGeom(h.space, body.shape, h.prisms);
             h.tags.push_back({GeomTag::Kind::Body, i});
             dGeomSetData(geom, &h.tags.back());
             if (body.kind == BodyKind::Fixed)
@@ -207,7 +132,7 @@ namespace ompl_phys
                 continue;
             }
             dBodyID dynamic = dBodyCreate(h.world);
-            setMass(dynamic, body.shape, body.mass);
+            setShapeMass(dynamic, body.shape, body.mass);
             dGeomSetBody(geom, dynamic);
             h.bodies.push_back(dynamic);
         }

@@ -148,12 +148,13 @@ TEST_F(Propagation, PropagateWhileValidStopsBeforeTheWall)
 
 TEST_F(Propagation, EverySubStepIsChecked)
 {
-    // The robot passes the wall's south-east corner c = (0.5, 0.7) diagonally (north-east at 0.49 m/s per
-    // axis) within one 0.07 s step: its path c + d (1, -1)/sqrt2 + s (1, 1)/sqrt2 comes within d of the
-    // corner at s = 0 and ends at s = +-0.0243 m, sqrt(d^2 + s^2) from it. With d = 0.078 both ends are
-    // clear of the robot's radius 0.08, but the sub-step poses near s = +-0.0035 overlap the corner.
+    // The robot passes the wall's south-east corner c = (0.5, 0.7) diagonally (north-east at 0.35 m/s per
+    // axis, 0.495 m/s) within one 0.07 s step: its path c + d (1, -1)/sqrt2 + s (1, 1)/sqrt2 comes within
+    // d of the corner at s = 0 and ends at s = +-0.0173 m, sqrt(d^2 + s^2) from it. With d = 0.0788 both
+    // ends are clear of the robot's radius 0.08, but the sub-step poses near s = +-0.0025 overlap the
+    // corner.
     const double r = scene().robot.radius;
-    const double v = 0.49;
+    const double v = 0.35;
     const double step = si_->getPropagationStepSize();
     const Eigen::Vector2d corner(0.5, 0.7);
     const Eigen::Vector2d normal = Eigen::Vector2d(1.0, -1.0).normalized();
@@ -166,7 +167,7 @@ TEST_F(Propagation, EverySubStepIsChecked)
         return std::make_pair(from, propagate(robotAt(from.x(), from.y(), v, v), Eigen::Vector2d::Zero(), 1));
     };
 
-    const double grazing = 0.078;
+    const double grazing = 0.0788;
     const auto [from, grazed] = pass(grazing);
     const Eigen::Vector2d to = corner + grazing * normal + half * along;
     // both ends are clear, so a check of the final state alone would accept this step
@@ -286,15 +287,41 @@ TEST_F(Propagation, RobotLeavingItsRegion)
     EXPECT_EQ(in.violation, Violation::None);
 }
 
+TEST_F(Propagation, TheDriveHoldsTheSpeedLimit)
+{
+    // at 0.45 m/s, 10 N on 1 kg would add 0.1 m/s in the first 0.01 s sub-step: beyond 0.5 m/s. The
+    // drive applies only what keeps the speed at 0.99 of the limit, so the robot cruises there.
+    const double limit = scene().limits.maxRobotSpeed;
+    const Outcome held = propagate(robotAt(-0.5, -0.5, 0.45, 0.0), Eigen::Vector2d(10.0, 0.0), 3);
+    EXPECT_EQ(held.violation, Violation::None) << violationName(held.violation);
+    EXPECT_TRUE(held.valid);
+    EXPECT_NEAR(held.states[0].linearVelocity.head<2>().norm(), SpeedGovernor::SPEED_MARGIN * limit, 1e-9);
+    // the full force from rest along the diagonal: within the limit at every step
+    BodyStates states = robotAt(-0.7, -0.7);
+    for (int step = 0; step < 10; ++step)
+    {
+        const Outcome next = propagate(states, Eigen::Vector2d(10.0, 10.0), 1);
+        ASSERT_EQ(next.violation, Violation::None) << step;
+        EXPECT_LE(next.states[0].linearVelocity.head<2>().norm(), limit) << step;
+        states = next.states;
+    }
+    EXPECT_NEAR(states[0].linearVelocity.x(), states[0].linearVelocity.y(), 1e-9) << "the direction is kept";
+}
+
 TEST_F(Propagation, RobotTooFast)
 {
-    // at 0.45 m/s, 10 N on 1 kg adds 0.1 m/s in the first 0.01 s sub-step: beyond 0.5 m/s
-    const Outcome fast = propagate(robotAt(-0.5, -0.5, 0.45, 0.0), Eigen::Vector2d(10.0, 0.0), 1);
+    // a robot a little over the limit (after a bounce, say) is braked back below it by the drive
+    const double limit = scene().limits.maxRobotSpeed;
+    const Outcome braked = propagate(robotAt(-0.5, -0.5, 0.42, 0.3), Eigen::Vector2d::Zero(), 1);
+    EXPECT_EQ(braked.violation, Violation::None) << violationName(braked.violation);
+    EXPECT_LE(braked.states[0].linearVelocity.head<2>().norm(), limit);
+    // one far over it cannot be braked within a sub-step (10 N take 0.1 m/s off): it breaks the limit
+    const Outcome fast = propagate(robotAt(-0.5, -0.5, 1.0, 0.0), Eigen::Vector2d::Zero(), 1);
     EXPECT_EQ(fast.violation, Violation::TooFast) << violationName(fast.violation);
     EXPECT_FALSE(fast.valid);
-    EXPECT_NEAR(fast.states[0].linearVelocity.x(), 0.55, 1e-9);
+    EXPECT_NEAR(fast.states[0].linearVelocity.x(), 0.9, 1e-9);
     // coasting just below the limit is fine
-    const Outcome coasting = propagate(robotAt(-0.5, -0.5, 0.49, -0.49), Eigen::Vector2d::Zero(), 3);
+    const Outcome coasting = propagate(robotAt(-0.5, -0.5, 0.35, -0.35), Eigen::Vector2d::Zero(), 3);
     EXPECT_EQ(coasting.violation, Violation::None);
 }
 
@@ -314,8 +341,8 @@ TEST_F(Propagation, BrokenStateStaysBroken)
 TEST_F(Propagation, CountersCountPropagationsSubStepsAndStops)
 {
     const PhysicsStatePropagator::Counters before = setup_.propagator().counters();
-    propagate(robotAt(-0.5, -0.5), Eigen::Vector2d(1.0, 0.0), 3);              // 3 x 7 sub-steps
-    propagate(robotAt(-0.5, -0.5, 0.45, 0.0), Eigen::Vector2d(10.0, 0.0), 1);  // stops after 1
+    propagate(robotAt(-0.5, -0.5), Eigen::Vector2d(1.0, 0.0), 3);          // 3 x 7 sub-steps
+    propagate(robotAt(-0.5, -0.5, 1.0, 0.0), Eigen::Vector2d::Zero(), 1);  // stops after 1
     const PhysicsStatePropagator::Counters &after = setup_.propagator().counters();
     EXPECT_EQ(after.propagations - before.propagations, 2u);
     EXPECT_EQ(after.substeps - before.substeps, 3u * scene().contact.substeps + 1u);

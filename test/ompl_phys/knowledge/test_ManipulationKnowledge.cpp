@@ -193,9 +193,9 @@ TEST_F(SmallSceneKnowledge, RegionsAndSpeeds)
 
     const PlanningLimits &limits = scene_.limits;
     states = start_;
-    states[0].linearVelocity = Eigen::Vector3d(limits.maxRobotSpeed, -limits.maxRobotSpeed, 0.0);
+    states[0].linearVelocity = Eigen::Vector3d(0.6, -0.8, 0.0) * limits.maxRobotSpeed;  // speed: the limit
     EXPECT_EQ(knowledge_.checkStates(states), Violation::None);
-    states[0].linearVelocity.y() = -1.01 * limits.maxRobotSpeed;
+    states[0].linearVelocity.y() = -0.81 * limits.maxRobotSpeed;
     EXPECT_EQ(knowledge_.checkStates(states), Violation::TooFast);
     states = start_;
     states[looseMoving_].linearVelocity.x() = 1.01 * limits.maxBodySpeed;
@@ -399,49 +399,48 @@ TEST_F(SmallSceneKnowledge, BodiesJustInsideAndOutsideTheirRegion)
     EXPECT_EQ(knowledge_.checkStates(states), Violation::OutsideRegion);
 }
 
-TEST_F(SmallSceneKnowledge, RobotAngularSpeedLimit)
+TEST_F(SmallSceneKnowledge, RobotAngularSpeedLimitBoundsTheNorm)
 {
     const double limit = scene_.limits.maxAngularSpeed;
     BodyStates states = start_;
-    states[0].angularVelocity = Eigen::Vector3d(limit, -limit, 0.99 * limit);
+    states[0].angularVelocity = Eigen::Vector3d(0.57, -0.57, 0.57) * limit;  // norm 0.987 limit
     EXPECT_EQ(knowledge_.checkStates(states), Violation::None);
-    states[0].angularVelocity.x() = 1.001 * limit;
-    EXPECT_EQ(knowledge_.checkStates(states), Violation::TooFast);
-    states[0].angularVelocity.x() = limit;
-    states[0].angularVelocity.y() = -1.001 * limit;
+    states[0].angularVelocity.z() = 0.6 * limit;  // norm 1.005 limit, each component below it
     EXPECT_EQ(knowledge_.checkStates(states), Violation::TooFast);
 }
 
-TEST_F(SmallSceneKnowledge, RobotLinearSpeedLimitPerComponent)
+TEST_F(SmallSceneKnowledge, RobotLinearSpeedLimitBoundsTheHorizontalSpeed)
 {
     const double limit = scene_.limits.maxRobotSpeed;
     BodyStates states = start_;
-    // each component within the limit, though the speed (the norm) is above it
-    states[0].linearVelocity = Eigen::Vector3d(0.999 * limit, -0.999 * limit, 0.0);
+    // each component within the limit, the speed (the norm) above it: a bound per component let
+    // a diagonal motion go 1.41 times as fast
+    states[0].linearVelocity = Eigen::Vector3d(0.8, -0.8, 0.0) * limit;
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::TooFast);
+    states[0].linearVelocity = Eigen::Vector3d(0.7, -0.7, 0.0) * limit;  // speed 0.99 limit
     EXPECT_EQ(knowledge_.checkStates(states), Violation::None);
-    states[0].linearVelocity.x() = 1.001 * limit;
-    EXPECT_EQ(knowledge_.checkStates(states), Violation::TooFast);
-    states[0].linearVelocity.x() = -1.001 * limit;
-    EXPECT_EQ(knowledge_.checkStates(states), Violation::TooFast);
+    // the vertical velocity of a sphere on the floor does not count
+    states[0].linearVelocity.z() = 2.0 * limit;
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::None);
 }
 
-TEST_F(SmallSceneKnowledge, BodySpeedLimitsJustInsideAndOutside)
+TEST_F(SmallSceneKnowledge, BodySpeedLimitsBoundTheNorm)
 {
     const PlanningLimits &limits = scene_.limits;
     for (std::size_t moving : {looseMoving_, sliderMoving_})
     {
         SCOPED_TRACE(moving);
         BodyStates states = start_;
-        states[moving].linearVelocity = Eigen::Vector3d(0.999, -0.999, 0.999) * limits.maxBodySpeed;
-        states[moving].angularVelocity = Eigen::Vector3d(-0.999, 0.999, 0.999) * limits.maxAngularSpeed;
+        states[moving].linearVelocity = Eigen::Vector3d(0.57, -0.57, 0.57) * limits.maxBodySpeed;
+        states[moving].angularVelocity = Eigen::Vector3d(-0.57, 0.57, 0.57) * limits.maxAngularSpeed;
         EXPECT_EQ(knowledge_.checkStates(states), Violation::None);
         for (int k = 0; k < 3; ++k)
         {
             BodyStates fast = states;
-            fast[moving].linearVelocity[k] = -1.001 * limits.maxBodySpeed;
+            fast[moving].linearVelocity[k] *= 0.6 / 0.57;
             EXPECT_EQ(knowledge_.checkStates(fast), Violation::TooFast) << "linear " << k;
             fast = states;
-            fast[moving].angularVelocity[k] = 1.001 * limits.maxAngularSpeed;
+            fast[moving].angularVelocity[k] *= 0.6 / 0.57;
             EXPECT_EQ(knowledge_.checkStates(fast), Violation::TooFast) << "angular " << k;
         }
     }
