@@ -1,5 +1,6 @@
-// Tests for PhysicsSetup: the benchmark planners solve scene 1 and their controls, re-simulated, reach the
-// goal; the same seed gives the same plan; bad planners and bad starts or goals are rejected.
+// Tests for PhysicsSetup: every planner solves every benchmark scene and its controls, replayed in a
+// fresh world, reach the goal with no rule broken at any sub-step; the same seed gives the same plan;
+// bad planners and bad starts or goals are rejected.
 #include "ompl_phys/control/PhysicsSetup.h"
 
 #include "ompl_phys/base/RobotProjection.h"
@@ -26,12 +27,12 @@ using namespace ompl_phys::test;
 
 namespace
 {
-    /** Each case's search is bounded by evaluations of its termination condition (about one per
-        iteration), twice what the case needs with its seed: a regression then fails in about twice a
-        passing run's time, and a passing run stops at its solution, never at the bound, on any machine
-        (the counts are deterministic per seed). Measured: rrt 5 15955, est 2 101794, kpiece 5 62540,
-        sycloprrt 1 35183, syclopest 1 74601, pdst 4 26246. */
+    /** Searches are bounded by evaluations of their termination condition (about one per iteration),
+        far above what each case needs with its seed, so that a passing run stops at its solution,
+        never at the bound, on any machine (the counts are deterministic per seed): SyclopRRT on
+        scene 1 with seed 1 for the same-seed test, and every planner on every scene with seed 1. */
     constexpr unsigned int SYCLOPRRT_SEED_1_BOUND = 70000;
+    constexpr unsigned int EVERY_PLANNER_BOUND = 400000;
 
     /** Seeds OMPL's generators for everything created afterwards. Re-seeding within one process is what
         these tests need; OMPL reports it as an error ("random number generation already started"), which
@@ -86,12 +87,26 @@ namespace
         TrajectoryMetrics metrics;
     };
 
-    /** Solves scene 1 with planner and seed, checks the plan by re-simulating it. */
-    PlanRun solveSceneOne(const std::string &planner, std::uint_fast32_t seed, unsigned int bound)
+    /** Re-simulates path's controls from the start in a fresh setup of the scene: a new ODE world,
+        which owes nothing to the planner's. */
+    SimulatedPath replayInAFreshWorld(const PhysicsScene &scene, const ompl::control::PathControl &path)
+    {
+        PhysicsSetup fresh(scene);
+        ompl::control::PathControl replayed(fresh.getSpaceInformation());
+        replayed.append(fresh.getProblemDefinition()->getStartState(0));
+        for (std::size_t i = 0; i < path.getControlCount(); ++i)
+            replayed.append(path.getState(i + 1), path.getControl(i), path.getControlDuration(i));
+        return simulatePath(fresh, replayed);
+    }
+
+    /** Solves benchmark scene n with planner and seed, checks the plan by replaying its controls in a
+        fresh world. */
+    PlanRun solveScene(int n, const std::string &planner, std::uint_fast32_t seed, unsigned int bound)
     {
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
         seedOmpl(seed);
-        PhysicsSetup setup(benchmarkScene(1));
+        const PhysicsScene scene = benchmarkScene(n);
+        PhysicsSetup setup(scene);
         setup.setPlannerByName(planner);
         setup.solve(ompl::base::IterationTerminationCondition(bound));
         PlanRun run;
@@ -100,7 +115,7 @@ namespace
             return run;
         ompl::control::PathControl &path = setup.getSolutionPath();
         run.path = record(setup, path);
-        run.simulated = simulatePath(setup, path);
+        run.simulated = replayInAFreshWorld(scene, path);
         run.metrics = computeTrajectoryMetrics(run.simulated.robot);
 
         // every control lasts a whole number of steps within the scene's limits
@@ -143,6 +158,7 @@ namespace
 
     struct PlannerCase
     {
+        int scene;
         std::string planner;
         std::uint_fast32_t seed;
         unsigned int bound;  ///< evaluations of the termination condition, twice what the case needs
@@ -150,10 +166,11 @@ namespace
 
     std::string caseName(const ::testing::TestParamInfo<PlannerCase> &info)
     {
-        return info.param.planner + "_seed" + std::to_string(info.param.seed);
+        return "scene" + std::to_string(info.param.scene) + "_" + info.param.planner + "_seed" +
+               std::to_string(info.param.seed);
     }
 
-    class SolvesSceneOne : public ::testing::TestWithParam<PlannerCase>
+    class SolvesTheScene : public ::testing::TestWithParam<PlannerCase>
     {
     };
 }  // namespace
@@ -271,10 +288,10 @@ TEST(PhysicsSetup, ProblemFollowsTheScene)
     EXPECT_TRUE(si->isValid(setup.getProblemDefinition()->getStartState(0)));
 }
 
-TEST_P(SolvesSceneOne, AndTheControlsReachTheGoal)
+TEST_P(SolvesTheScene, AndItsControlsReachTheGoalInAFreshWorld)
 {
     const PlannerCase c = GetParam();
-    const PlanRun run = solveSceneOne(c.planner, c.seed, c.bound);
+    const PlanRun run = solveScene(c.scene, c.planner, c.seed, c.bound);
     ASSERT_TRUE(run.exact) << c.planner << " found no exact solution in " << c.bound << " iterations";
     EXPECT_EQ(run.simulated.violation, Violation::None) << violationName(run.simulated.violation);
     EXPECT_TRUE(run.simulated.reachesGoal);
@@ -283,22 +300,27 @@ TEST_P(SolvesSceneOne, AndTheControlsReachTheGoal)
     EXPECT_GE(run.metrics.smoothness, 0.0);
 }
 
-// the planners of the benchmark paper, and PDST, each with a seed that solves scene 1 within seconds. SST is
-// left out: it keeps optimising until the time limit, so its runs take the whole limit and differ by timing.
-INSTANTIATE_TEST_SUITE_P(BenchmarkPlanners, SolvesSceneOne,
-                         ::testing::Values(PlannerCase{"rrt", 5, 32000}, PlannerCase{"est", 2, 204000},
-                                           PlannerCase{"kpiece", 5, 125000},
-                                           PlannerCase{"sycloprrt", 1, SYCLOPRRT_SEED_1_BOUND},
-                                           PlannerCase{"syclopest", 1, 150000},
-                                           PlannerCase{"pdst", 4, 52000}),
-                         caseName);
+// every planner of the registry on every benchmark scene, each with a seed that solves it within
+// seconds (SST stops at its first solution)
+INSTANTIATE_TEST_SUITE_P(
+    EveryPlannerOnEveryScene, SolvesTheScene,
+    ::testing::ValuesIn(
+        []
+        {
+            std::vector<PlannerCase> cases;
+            for (int scene : {1, 2, 3})
+                for (const char *planner : {"rrt", "est", "kpiece", "sycloprrt", "syclopest", "pdst", "sst"})
+                    cases.push_back({scene, planner, 1, EVERY_PLANNER_BOUND});
+            return cases;
+        }()),
+    caseName);
 
 TEST(PhysicsSetup, SameSeedGivesTheSamePlan)
 {
     // SyclopRRT solves scene 1 with seed 1 in a few seconds, far inside the limit, so both runs stop at
     // the same iteration
-    const PlanRun first = solveSceneOne("sycloprrt", 1, SYCLOPRRT_SEED_1_BOUND);
-    const PlanRun second = solveSceneOne("sycloprrt", 1, SYCLOPRRT_SEED_1_BOUND);
+    const PlanRun first = solveScene(1, "sycloprrt", 1, SYCLOPRRT_SEED_1_BOUND);
+    const PlanRun second = solveScene(1, "sycloprrt", 1, SYCLOPRRT_SEED_1_BOUND);
     ASSERT_TRUE(first.exact);
     ASSERT_TRUE(second.exact);
     EXPECT_TRUE(first.path == second.path) << "controls, durations or states differ";
