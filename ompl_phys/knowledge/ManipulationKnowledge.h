@@ -30,6 +30,14 @@ namespace ompl_phys
     class ManipulationKnowledge
     {
     public:
+        /** Largest lean of a movable box's, cylinder's or prism's up axis from vertical, radians
+            (15°): a pushed cube tilts a few degrees; beyond this it is falling over. */
+        static constexpr double TIP_TOLERANCE = 0.2617993877991494;
+        /** Deepest penetration between two bodies (the robot, movable and fixed bodies, the floor)
+            that a simulated state may show, metres: ODE's soft contacts rest about its 1 mm
+            surface layer deep; deeper, a body is sinking into another. */
+        static constexpr double SINK_TOLERANCE = 0.005;
+
         /** Shares scene, which it keeps alive.
             @throws ompl::Exception when scene is null. */
         explicit ManipulationKnowledge(PhysicsScenePtr scene);
@@ -44,9 +52,13 @@ namespace ompl_phys
             Violation::None. */
         Violation checkTouches(const std::vector<std::size_t> &touches, const BodyStates &states) const;
 
+        /** Violation::SankIn when the deepest penetration a collision check found between two bodies
+            (PhysicsWorld::deepestPenetration, metres) exceeds SINK_TOLERANCE, else Violation::None. */
+        static Violation checkPenetration(double deepest);
+
         /** The first broken rule or limit of the states alone, or Violation::None: finiteness,
-            regions, the robot overlapping a fixed body, speeds, and constraint-oriented bodies on
-            their axes. */
+            regions, the robot overlapping a fixed body, speeds, constraint-oriented bodies on
+            their axes, and movable bodies upright (TIP_TOLERANCE; spheres have no up). */
         Violation checkStates(const BodyStates &states) const;
 
         /** Moving bodies (indices >= 1) whose footprint overlaps the robot standing anywhere in the

@@ -15,10 +15,12 @@ namespace ompl_phys
         OutsideRegion,         ///< the robot or a body left its region
         TooFast,               ///< a speed limit was exceeded
         NotFinite,             ///< the simulation produced NaN or infinity
+        TippedOver,            ///< a movable body leaned over (ManipulationKnowledge::TIP_TOLERANCE)
+        SankIn,  ///< bodies sank into each other or the floor (ManipulationKnowledge::SINK_TOLERANCE)
     };
 
     /** The number of Violation values, None included: the size of arrays indexed by violation. */
-    constexpr int VIOLATION_KINDS = 7;
+    constexpr int VIOLATION_KINDS = 9;
 
     /** A short snake_case name, for logs and result files ("touched_fixed_body"). */
     const char *violationName(Violation violation);

@@ -64,6 +64,10 @@ namespace ompl_phys
             that involve a moving body, metres. */
         double detectContacts();
 
+        /** The deepest penetration between two geoms, one of them moving, that the collision check
+            of the last step() (at its start) or detectContacts() found, metres. */
+        double deepestPenetration() const { return deepest_; }
+
         /** Scene body indices the robot touched in the last step() or detectContacts(), ascending,
             without repeats. Valid until the next step() or detectContacts(). */
         const std::vector<std::size_t> &touches() const { return touches_; }

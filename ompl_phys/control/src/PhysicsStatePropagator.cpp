@@ -54,6 +54,8 @@ namespace ompl_phys
             ++counters_.substeps;
             // the robot's touches were found before the step: judge them at the poses of that moment
             violation = knowledge_->checkTouches(world_->touches(), states_);
+            if (violation == Violation::None)
+                violation = ManipulationKnowledge::checkPenetration(world_->deepestPenetration());
             world_->readStates(states_);
             if (violation == Violation::None)
                 violation = knowledge_->checkStates(states_);

@@ -82,6 +82,11 @@ namespace ompl_phys
         return Violation::None;
     }
 
+    Violation ManipulationKnowledge::checkPenetration(double deepest)
+    {
+        return deepest > SINK_TOLERANCE ? Violation::SankIn : Violation::None;
+    }
+
     Violation ManipulationKnowledge::checkStates(const BodyStates &states) const
     {
         const PlanningLimits &limits = scene_->limits;
@@ -108,6 +113,9 @@ namespace ompl_phys
             if (!withinSpeed(s.linearVelocity, limits.maxBodySpeed) ||
                 !withinSpeed(s.angularVelocity, limits.maxAngularSpeed))
                 return Violation::TooFast;
+            if (body.shape.kind != PhysicsShape::Kind::Sphere &&
+                (s.orientation * Eigen::Vector3d::UnitZ()).z() < std::cos(TIP_TOLERANCE))
+                return Violation::TippedOver;
             if (body.kind != BodyKind::Constrained)
                 continue;
             const StartAxis &start = startAxes_[i];

@@ -20,6 +20,10 @@ namespace ompl_phys
                 return "too_fast";
             case Violation::NotFinite:
                 return "not_finite";
+            case Violation::TippedOver:
+                return "tipped_over";
+            case Violation::SankIn:
+                return "sank_in";
         }
         return "unknown";
     }

@@ -271,6 +271,24 @@ TEST_F(Propagation, FreeCubeMayBePushedFromAnySide)
     }
 }
 
+TEST_F(Propagation, ABodySinkingIntoTheFloorOrAWallIsRejected)
+{
+    // the free cube 1 cm into the floor, then 1 cm into the wall (y from 0.7 to 0.9): deeper than the
+    // sink tolerance, found by the first sub-step's collision check
+    const std::size_t loose = moving("loose");
+    BodyStates sunk = robotAt(-0.8, -0.8);
+    sunk[loose].position.z() -= 0.01;
+    const Outcome floor = propagate(sunk, Eigen::Vector2d::Zero(), 1);
+    EXPECT_EQ(floor.violation, Violation::SankIn) << violationName(floor.violation);
+    EXPECT_FALSE(floor.valid);
+    BodyStates inWall = robotAt(-0.8, -0.8);
+    inWall[loose].position = Eigen::Vector3d(-0.2, 0.7 - 0.1 + 0.01, 0.1);
+    EXPECT_EQ(propagate(inWall, Eigen::Vector2d::Zero(), 1).violation, Violation::SankIn);
+    // resting on the floor and 2 mm from the wall, it stays valid
+    inWall[loose].position.y() = 0.7 - 0.1 - 0.002;
+    EXPECT_EQ(propagate(inWall, Eigen::Vector2d::Zero(), 1).violation, Violation::None);
+}
+
 // --- regions and speeds -------------------------------------------------------------------------------
 
 TEST_F(Propagation, RobotLeavingItsRegion)

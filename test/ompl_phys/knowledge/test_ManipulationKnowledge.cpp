@@ -446,6 +446,39 @@ TEST_F(SmallSceneKnowledge, BodySpeedLimitsBoundTheNorm)
     }
 }
 
+TEST_F(SmallSceneKnowledge, AMovableBodyLeaningBeyondTheToleranceTippedOver)
+{
+    const double tolerance = ManipulationKnowledge::TIP_TOLERANCE;
+    for (std::size_t moving : {looseMoving_, sliderMoving_})
+        for (const Eigen::Vector3d &axis : std::vector<Eigen::Vector3d>{
+                 Eigen::Vector3d::UnitX(), Eigen::Vector3d(1.0, 1.0, 0.0).normalized()})
+        {
+            SCOPED_TRACE(::testing::Message() << moving << " about " << axis.transpose());
+            BodyStates states = start_;
+            states[moving].orientation =
+                Eigen::AngleAxisd(tolerance + 0.01, axis) * start_[moving].orientation;
+            EXPECT_EQ(knowledge_.checkStates(states), Violation::TippedOver);
+            states[moving].orientation =
+                Eigen::AngleAxisd(tolerance - 0.01, axis) * start_[moving].orientation;
+            // within it the free cube is fine (the slider turned beyond its own angle tolerance)
+            EXPECT_EQ(knowledge_.checkStates(states),
+                      moving == looseMoving_ ? Violation::None : Violation::LeftPushAxis);
+        }
+    // turning about the vertical is no lean
+    BodyStates states = start_;
+    states[looseMoving_].orientation =
+        Eigen::AngleAxisd(2.0, Eigen::Vector3d::UnitZ()) * start_[looseMoving_].orientation;
+    EXPECT_EQ(knowledge_.checkStates(states), Violation::None);
+}
+
+TEST(ManipulationKnowledge, PenetrationJustWithinAndBeyondTheSinkTolerance)
+{
+    const double tolerance = ManipulationKnowledge::SINK_TOLERANCE;
+    EXPECT_EQ(ManipulationKnowledge::checkPenetration(0.0), Violation::None);
+    EXPECT_EQ(ManipulationKnowledge::checkPenetration(0.99 * tolerance), Violation::None);
+    EXPECT_EQ(ManipulationKnowledge::checkPenetration(1.01 * tolerance), Violation::SankIn);
+}
+
 TEST_F(SmallSceneKnowledge, EveryNonFiniteNumberIsCaught)
 {
     const double nan = std::numeric_limits<double>::quiet_NaN();
