@@ -13,8 +13,9 @@ namespace ompl_phys
 {
     /** Propagates a physics state under a control (a horizontal force on the robot, N, world x and
         y) by simulating the ODE world: write the state into the world, step it in `substeps` ODE
-        steps per propagation step, judge every sub-step by the manipulation knowledge and the
-        planning limits, read the state back. A sub-step that breaks a rule ends the simulation
+        steps per propagation step with the robot's drive applying the force (SpeedGovernor holds
+        back what would break the speed limit), judge every sub-step by the manipulation knowledge
+        and the planning limits, read the state back. A sub-step that breaks a rule ends the simulation
         there and marks the result with the violation, which the validity checker rejects, so
         propagateWhileValid stops at the last good step. ODE's random generator is reset on every
         call: the same state and control always give a bit-identical result.
