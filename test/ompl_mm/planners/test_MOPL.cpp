@@ -306,6 +306,28 @@ TEST(MOPLParameters, ProbabilitiesMustLieInTheClosedUnitInterval)
     }
 }
 
+TEST(MOPLParameters, MetricWeightsMustNotBeNegative)
+{
+    // the nearest-neighbour search's lower bounds hold only for weights of 0 or more
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    ManipulationSetup setup(mobileBlockedScene());
+    ompl::base::ParamSet &params = setup.mopl()->params();
+    EXPECT_EQ(ompl_core::test::exceptionOf([&] { params.setParam("joint_weight", "-1"); }),
+              "MOPL: joint_weight must be in [0, 100], got -1");
+    EXPECT_EQ(ompl_core::test::exceptionOf([&] { params.setParam("contact_distance", "11"); }),
+              "MOPL: contact_distance must be in [0, 10], got 11");
+    for (const char *name : {"robot_weight", "joint_weight", "base_joint_weight", "tool_weight", "rotation_weight",
+                             "moving_object_penalty", "move_to_object_penalty", "move_to_object_factor",
+                             "contact_distance"})
+    {
+        const std::string before = params.getParam(name)->getValue();
+        EXPECT_THROW(params.setParam(name, "-0.5"), std::runtime_error) << name;
+        EXPECT_EQ(params.getParam(name)->getValue(), before) << name << " keeps its value";
+        EXPECT_TRUE(params.setParam(name, "0")) << name;
+        EXPECT_EQ(std::stod(params.getParam(name)->getValue()), 0.0) << name;
+    }
+}
+
 TEST(MOPLParameters, ObjectsOutOfPlayKeepAChanceAndClearingHasItsRanges)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
