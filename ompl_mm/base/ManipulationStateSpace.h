@@ -7,9 +7,14 @@
 #include <ompl/base/spaces/SO2StateSpace.h>
 
 #include <cstddef>
+#include <string>
 
 namespace ompl_mm
 {
+    /** Coordinates (metres, radians) that differ by no more than this count as the same: an object
+        or joint that changes by no more does not move. */
+    constexpr double SAME_COORDINATE = 1e-9;
+
     /** The configuration space of a manipulation problem: the robot's joints times one upright pose
         (x, y, z, yaw) per movable object. A CompoundStateSpace with subspaces "robot" (RealVector,
         one dimension per moving joint, bounded by the joint limits), then per object
@@ -113,4 +118,9 @@ namespace ompl_mm
 
     /** Shared ownership of a ManipulationStateSpace, as OMPL passes state spaces around. */
     using ManipulationStateSpacePtr = std::shared_ptr<ManipulationStateSpace>;
+
+    /** space as a ManipulationStateSpace, for a class that works only on one.
+        @throws ompl::Exception "<user>: needs a ManipulationStateSpace, got <name>" when it is another. */
+    const ManipulationStateSpace *manipulationSpaceOf(const ompl::base::StateSpace *space,
+                                                      const std::string &user);
 }  // namespace ompl_mm

@@ -86,8 +86,6 @@ namespace ompl_mm
         /** The most a joint may turn in a short move, radians or metres. */
         static constexpr double MAX_SHORT_MOVE = 0.5;
 
-        /** The frame of an object's pose: base centre, rotation about the vertical. */
-        static Eigen::Isometry3d objectFrame(const ObjectPose &pose);
         /** The pose of an object held in the tool: its frame relative to the tool, `grasp`, moved
             with the tool to toolFrame; the yaw kept from `yaw` when the object turns freely. */
         ObjectPose heldPose(unsigned int object, const Eigen::Isometry3d &toolFrame,

@@ -98,6 +98,14 @@ namespace ompl_mm
     {
         Eigen::Vector3d position{Eigen::Vector3d::Zero()};  ///< base centre in the world, metres
         double yaw{0.0};                                    ///< rotation about world z, radians
+
+        /** The object's frame in the world: at the base centre, turned by yaw about world z. */
+        Eigen::Isometry3d frame() const
+        {
+            Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
+            frame.translate(position).rotate(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
+            return frame;
+        }
     };
 
     /** A movable rigid object; its frame is at the centre of its base, z up. */

@@ -11,6 +11,10 @@ namespace ompl_phys
     double footprintDistance(const PhysicsShape &shape, const Eigen::Vector2d &position, double yaw,
                              const Eigen::Vector2d &point);
 
+    /** The cross product of two vectors on the floor (the z of their 3-D cross product): positive
+        when b turns counter-clockwise from a. */
+    double cross(const Eigen::Vector2d &a, const Eigen::Vector2d &b);
+
     /** Rotation about the vertical of an orientation (its x axis projected on the floor), radians in
         [-pi, pi]. */
     double yawOf(const Eigen::Quaterniond &orientation);

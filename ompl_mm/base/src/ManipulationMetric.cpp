@@ -10,8 +10,6 @@ namespace ompl_mm
 {
     namespace
     {
-        constexpr double SAME = 1e-9;
-
         /** The object of the set `objects` (bits) with the smallest squared distance (the first
             such, in index order); that distance in *nearest. @pre objects != 0. */
         int nearestObject(std::uint64_t objects, const double *squared, double *nearest)
@@ -218,7 +216,8 @@ namespace ompl_mm
         {
             const int i = __builtin_ctzll(rest);
             const Eigen::Vector3d displacement = positions[i] - targets[i];
-            if (displacement.cwiseAbs().maxCoeff() > SAME || std::abs(yaws[i] - targetYaws[i]) > SAME)
+            if (displacement.cwiseAbs().maxCoeff() > SAME_COORDINATE ||
+                std::abs(yaws[i] - targetYaws[i]) > SAME_COORDINATE)
             {
                 cost.moving |= std::uint64_t{1} << i;
                 cost.bound += weights_.movingObjectPenalty + displacement.norm();

@@ -2,6 +2,8 @@
 
 #include "ompl_mm/base/ManipulationStateSampler.h"
 
+#include <ompl/util/Exception.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -13,7 +15,6 @@ namespace ompl_mm
 {
     namespace
     {
-        constexpr double SAME = 1e-9;
         /** The largest longest-valid-segment fraction OMPL accepts (it requires less than 1). */
         constexpr double MAX_SEGMENT_FRACTION = 1.0 - 1e-9;
 
@@ -216,8 +217,9 @@ namespace ompl_mm
     bool ManipulationStateSpace::objectMoves(const ob::State *a, const ob::State *b,
                                              unsigned int object) const
     {
-        return (objectPosition(a, object) - objectPosition(b, object)).cwiseAbs().maxCoeff() > SAME ||
-               std::abs(objectYaw(a, object) - objectYaw(b, object)) > SAME;
+        return (objectPosition(a, object) - objectPosition(b, object)).cwiseAbs().maxCoeff() >
+                   SAME_COORDINATE ||
+               std::abs(objectYaw(a, object) - objectYaw(b, object)) > SAME_COORDINATE;
     }
 
     bool ManipulationStateSpace::anyObjectMoves(const ob::State *a, const ob::State *b) const
@@ -233,7 +235,7 @@ namespace ompl_mm
         const double *qa = robotValues(a);
         const double *qb = robotValues(b);
         for (unsigned int i = 0; i < robotDimension(); ++i)
-            if (std::abs(qa[i] - qb[i]) > SAME)
+            if (std::abs(qa[i] - qb[i]) > SAME_COORDINATE)
                 return true;
         return false;
     }
@@ -364,5 +366,14 @@ namespace ompl_mm
                 << pose.position.y() << " " << pose.position.z() << " yaw " << pose.yaw << ")";
         }
         out << std::endl;
+    }
+
+    const ManipulationStateSpace *manipulationSpaceOf(const ompl::base::StateSpace *space,
+                                                      const std::string &user)
+    {
+        const auto *manipulation = dynamic_cast<const ManipulationStateSpace *>(space);
+        if (!manipulation)
+            throw ompl::Exception(user, "needs a ManipulationStateSpace, got " + space->getName());
+        return manipulation;
     }
 }  // namespace ompl_mm

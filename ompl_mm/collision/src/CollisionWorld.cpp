@@ -68,12 +68,6 @@ namespace ompl_mm
             return convex;
         }
 
-        Eigen::Isometry3d objectFrame(const ObjectPose &pose)
-        {
-            Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
-            frame.translate(pose.position).rotate(Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()));
-            return frame;
-        }
     }  // namespace
 
     std::shared_ptr<fcl::CollisionGeometryd> makeCollisionGeometry(const Shape &shape, MeshCollision meshes)
@@ -273,7 +267,7 @@ namespace ompl_mm
         }
         for (const Body &body : objectBodies_)
             if (isPresent(configuration, body.owner))
-                place(*body.object, objectFrame((*configuration.objects)[body.owner]) * body.offset);
+                place(*body.object, (*configuration.objects)[body.owner].frame() * body.offset);
     }
 
     bool CollisionWorld::hitsObstacle(const Body &body, int allowedObstacle, std::string *contact) const

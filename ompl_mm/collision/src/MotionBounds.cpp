@@ -20,12 +20,6 @@ namespace ompl_mm
             return std::abs(std::remainder(to - from, 2.0 * M_PI));
         }
 
-        Eigen::Isometry3d objectFrame(const ObjectPose &pose)
-        {
-            Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
-            frame.translate(pose.position).rotate(Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()));
-            return frame;
-        }
     }  // namespace
 
     MotionBounds::MotionBounds(ManipulationModelPtr model) : model_(std::move(model))
@@ -113,8 +107,8 @@ namespace ompl_mm
             model_->robot().linkFrame(q1, model_->scene().robot.basePose, toolLink);
         const Eigen::Isometry3d tool2 =
             model_->robot().linkFrame(q2, model_->scene().robot.basePose, toolLink);
-        const Eigen::Isometry3d grasp1 = tool1.inverse() * objectFrame(from);
-        const Eigen::Isometry3d grasp2 = tool2.inverse() * objectFrame(to);
+        const Eigen::Isometry3d grasp1 = tool1.inverse() * from.frame();
+        const Eigen::Isometry3d grasp2 = tool2.inverse() * to.frame();
         const double graspReach = std::max(grasp1.translation().norm(), grasp2.translation().norm()) + radius;
         BodySweep sweep = linkSweep(toolLink, graspReach, q1, q2);
         // and the grasp itself moves: its translation, and its turn about the object's centre

@@ -1,26 +1,12 @@
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 
-#include <ompl/util/Exception.h>
-
 namespace ompl_mm
 {
-    namespace
-    {
-        const ManipulationStateSpace *manipulationSpace(const ompl::base::SpaceInformationPtr &si)
-        {
-            const auto *space = dynamic_cast<const ManipulationStateSpace *>(si->getStateSpace().get());
-            if (!space)
-                throw ompl::Exception("ManipulationMotionValidator needs a ManipulationStateSpace");
-            return space;
-        }
-
-    }  // namespace
-
     ManipulationMotionValidator::ManipulationMotionValidator(const ompl::base::SpaceInformationPtr &si,
                                                              std::vector<PrimitivePtr> primitives)
         : ompl::base::MotionValidator(si),
           primitives_(std::move(primitives)),
-          space_(manipulationSpace(si)),
+          space_(manipulationSpaceOf(si->getStateSpace().get(), "ManipulationMotionValidator")),
           world_(space_->model()),
           along_(space_->allocState())
     {

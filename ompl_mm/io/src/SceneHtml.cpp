@@ -45,13 +45,6 @@ namespace ompl_mm
             return solid;
         }
 
-        /** An upright object's frame (the centre of its base) as a pose. */
-        Eigen::Isometry3d objectFrame(const ObjectPose &pose)
-        {
-            return Eigen::Translation3d(pose.position) *
-                   Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ());
-        }
-
         /** The object's solid in its frame: the shape's centre lies half its height above the base. */
         ompl_core::ViewerSolid objectSolid(const MovableObject &object)
         {
@@ -147,7 +140,7 @@ namespace ompl_mm
                     if (goal.yaw)
                         pose.yaw = *goal.yaw;
                     ompl_core::ViewerSolid solid = objectSolid(object);
-                    solid.pose = objectFrame(pose) * solid.pose;
+                    solid.pose = pose.frame() * solid.pose;
                     plan_.goals.push_back({"goal " + object.name,
                                            objectColour(static_cast<unsigned int>(i)),
                                            GOAL_OPACITY,
@@ -234,7 +227,7 @@ namespace ompl_mm
                 for (const std::size_t l : robotLinks_)
                     poses.push_back(links[l]);
                 for (unsigned int i = 0; i < space_.objectCount(); ++i)
-                    poses.push_back(objectFrame(space_.objectPose(state, i)));
+                    poses.push_back(space_.objectPose(state, i).frame());
                 plan_.frames.push_back(poses);
                 plan_.toolPath.push_back(space_.toolPosition(state));
             }

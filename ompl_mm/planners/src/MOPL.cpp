@@ -37,15 +37,6 @@ namespace ompl_mm
             std::chrono::steady_clock::time_point start_;
         };
 
-        const ManipulationStateSpace *manipulationSpace(const ob::SpaceInformationPtr &si)
-        {
-            const auto *space = dynamic_cast<const ManipulationStateSpace *>(si->getStateSpace().get());
-            if (!space)
-                throw ompl::Exception(
-                    "MOPL", "needs a ManipulationStateSpace, got " + si->getStateSpace()->getName());
-            return space;
-        }
-
         /** OMPL's range suggestion "LOW:STEP:HIGH" for a parameter stepped by its lowest value. */
         std::string rangeSuggestion(double low, double high)
         {
@@ -67,7 +58,7 @@ namespace ompl_mm
     MOPL::MOPL(const ob::SpaceInformationPtr &si, std::vector<PrimitivePtr> primitives)
         : ob::Planner(si, "MOPL"),
           primitives_(std::move(primitives)),
-          space_(manipulationSpace(si)),
+          space_(manipulationSpaceOf(si->getStateSpace().get(), "MOPL")),
           metric_(std::make_unique<ManipulationMetric>(space_))
     {
         specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
@@ -96,8 +87,8 @@ namespace ompl_mm
         declareParam<unsigned int>("smoothing_attempts", this, &MOPL::setSmoothingAttempts,
                                    &MOPL::getSmoothingAttempts, "0:1:10000");
         // weights below 0 would let the nearest-neighbour search's lower bounds prune the nearest vertex
-        auto weight = [this](const std::string &name, double ManipulationMetric::Weights::*field, const char *range,
-                             double high)
+        auto weight = [this](const std::string &name, double ManipulationMetric::Weights::*field,
+                             const char *range, double high)
         {
             params().declareParam<double>(
                 name,
@@ -116,9 +107,12 @@ namespace ompl_mm
         weight("base_joint_weight", &ManipulationMetric::Weights::baseWeight, "0.:0.1:100.", 100.0);
         weight("tool_weight", &ManipulationMetric::Weights::toolWeight, "0.:0.1:100.", 100.0);
         weight("rotation_weight", &ManipulationMetric::Weights::rotationWeight, "0.:0.1:100.", 100.0);
-        weight("moving_object_penalty", &ManipulationMetric::Weights::movingObjectPenalty, "0.:0.1:100.", 100.0);
-        weight("move_to_object_penalty", &ManipulationMetric::Weights::moveToObjectPenalty, "0.:0.1:100.", 100.0);
-        weight("move_to_object_factor", &ManipulationMetric::Weights::moveToObjectFactor, "0.:0.1:100.", 100.0);
+        weight("moving_object_penalty", &ManipulationMetric::Weights::movingObjectPenalty, "0.:0.1:100.",
+               100.0);
+        weight("move_to_object_penalty", &ManipulationMetric::Weights::moveToObjectPenalty, "0.:0.1:100.",
+               100.0);
+        weight("move_to_object_factor", &ManipulationMetric::Weights::moveToObjectFactor, "0.:0.1:100.",
+               100.0);
         weight("contact_distance", &ManipulationMetric::Weights::contactDistance, "0.:0.01:10.", 10.0);
         auto probability =
             [this](const std::string &name, double ModalSampler::Probabilities::*field, double low = 0.0)

@@ -31,13 +31,6 @@ namespace ompl_mm
         ik_ = factory ? factory(chain, base) : std::make_unique<IkSolver>(chain, base);
     }
 
-    Eigen::Isometry3d Grasping::objectFrame(const ObjectPose &pose)
-    {
-        Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
-        frame.translate(pose.position).rotate(Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()));
-        return frame;
-    }
-
     Eigen::Isometry3d Grasping::solvedInTool(const double *q) const
     {
         const ManipulationModel &model = *space_->model();
@@ -127,7 +120,7 @@ namespace ompl_mm
 
     bool Grasping::solveCarry(const Eigen::Isometry3d &grasp, const ObjectPose &target, double *q)
     {
-        return solve(objectFrame(target) * grasp.inverse() * solvedInTool(q), IkTask::Pose5DFreeYaw, q);
+        return solve(target.frame() * grasp.inverse() * solvedInTool(q), IkTask::Pose5DFreeYaw, q);
     }
 
     ObjectPose Grasping::heldPose(unsigned int object, const Eigen::Isometry3d &toolFrame,
@@ -145,9 +138,9 @@ namespace ompl_mm
     {
         const ManipulationModel &model = *space.model();
         const Eigen::Isometry3d inA =
-            model.toolFrame(space.robotValues(a)).inverse() * objectFrame(space.objectPose(a, object));
+            model.toolFrame(space.robotValues(a)).inverse() * space.objectPose(a, object).frame();
         const Eigen::Isometry3d inB =
-            model.toolFrame(space.robotValues(b)).inverse() * objectFrame(space.objectPose(b, object));
+            model.toolFrame(space.robotValues(b)).inverse() * space.objectPose(b, object).frame();
         if ((inA.translation() - inB.translation()).norm() > GRASP_TOLERANCE)
             return false;
         if (model.scene().objects[object].shape.turnsFreely())

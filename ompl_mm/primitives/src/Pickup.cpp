@@ -7,11 +7,6 @@
 
 namespace ompl_mm
 {
-    namespace
-    {
-        constexpr double SAME = 1e-9;
-    }  // namespace
-
     Pickup::Pickup(const ManipulationStateSpace *space, std::shared_ptr<Grasping> grasping, Settings settings)
         : Primitive(space, "pickup", PrimitiveKind::Pickup),
           grasping_(std::move(grasping)),
@@ -30,7 +25,7 @@ namespace ompl_mm
     {
         const Eigen::Vector3d a = space_->objectPosition(from, object);
         const Eigen::Vector3d b = space_->objectPosition(to, object);
-        return space_->restingSurface(to, object) < 0 || std::abs(a.z() - b.z()) > SAME ||
+        return space_->restingSurface(to, object) < 0 || std::abs(a.z() - b.z()) > SAME_COORDINATE ||
                (a - b).head<2>().norm() > settings_.minPlaneDistance;
     }
 
@@ -77,8 +72,7 @@ namespace ompl_mm
         const std::vector<double> &liftJoints = joints[2];
 
         const ManipulationModel &model = *space_->model();
-        const Eigen::Isometry3d grasp =
-            model.toolFrame(graspJoints.data()).inverse() * Grasping::objectFrame(pose);
+        const Eigen::Isometry3d grasp = model.toolFrame(graspJoints.data()).inverse() * pose.frame();
         ompl::base::State *waypoint = space_->cloneState(from);
         double *q = space_->robotValues(waypoint);
         std::copy(approachJoints.begin(), approachJoints.end(), q);

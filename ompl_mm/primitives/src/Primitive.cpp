@@ -5,12 +5,6 @@
 
 namespace ompl_mm
 {
-    namespace
-    {
-        /** Differences below this are rounding, metres or radians. */
-        constexpr double SAME = 1e-9;
-    }  // namespace
-
     Primitive::Primitive(const ManipulationStateSpace *space, std::string name, PrimitiveKind kind)
         : space_(space), name_(std::move(name)), kind_(kind)
     {
@@ -54,7 +48,7 @@ namespace ompl_mm
     {
         const Eigen::Vector3d pa = space_->objectPosition(a, object);
         const Eigen::Vector3d pb = space_->objectPosition(b, object);
-        return std::abs(pa.z() - pb.z()) < SAME && (pa - pb).head<2>().norm() > SAME;
+        return std::abs(pa.z() - pb.z()) < SAME_COORDINATE && (pa - pb).head<2>().norm() > SAME_COORDINATE;
     }
 
     bool Primitive::pushable(const ompl::base::State *a, const ompl::base::State *b) const
@@ -78,7 +72,7 @@ namespace ompl_mm
             if (!space_->objectMoves(a, b, i))
                 continue;
             if (sliding >= 0 || !slides(a, b, i) ||
-                std::abs(space_->objectYaw(a, i) - space_->objectYaw(b, i)) > SAME)
+                std::abs(space_->objectYaw(a, i) - space_->objectYaw(b, i)) > SAME_COORDINATE)
                 return -1;
             sliding = static_cast<int>(i);
         }

@@ -46,8 +46,7 @@ namespace ompl_mm
         const ManipulationModel &model = *space_->model();
         const ObjectPose held = space_->objectPose(from, object);
         const ObjectPose target = space_->objectPose(to, object);
-        const Eigen::Isometry3d grasp =
-            model.toolFrame(space_->robotValues(from)).inverse() * Grasping::objectFrame(held);
+        const Eigen::Isometry3d grasp = model.toolFrame(space_->robotValues(from)).inverse() * held.frame();
         const unsigned int n = space_->robotDimension();
         const double *start = space_->robotValues(from);
         std::vector<double> placeJoints;

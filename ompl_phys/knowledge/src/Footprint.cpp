@@ -7,11 +7,6 @@ namespace ompl_phys
 {
     namespace
     {
-        double cross(const Eigen::Vector2d &a, const Eigen::Vector2d &b)
-        {
-            return a.x() * b.y() - a.y() * b.x();
-        }
-
         double segmentDistance(const Eigen::Vector2d &p, const Eigen::Vector2d &a, const Eigen::Vector2d &b)
         {
             const Eigen::Vector2d ab = b - a;
@@ -60,5 +55,10 @@ namespace ompl_phys
     {
         const Eigen::Vector3d x = orientation * Eigen::Vector3d::UnitX();
         return std::atan2(x.y(), x.x());
+    }
+
+    double cross(const Eigen::Vector2d &a, const Eigen::Vector2d &b)
+    {
+        return a.x() * b.y() - a.y() * b.x();
     }
 }  // namespace ompl_phys

@@ -13,11 +13,6 @@ namespace ompl_phys
         /** Granularity of the search for a place that clears the goal, metres. */
         constexpr double CLEARING_STEP = 0.01;
 
-        double cross(const Eigen::Vector2d &a, const Eigen::Vector2d &b)
-        {
-            return a.x() * b.y() - a.y() * b.x();
-        }
-
         /** Speed limits bound the norm of a velocity: a bound per component would let a diagonal
             motion go √3 times as fast. */
         template <typename Velocity>

@@ -33,19 +33,6 @@ namespace ompl_phys
                            });
         }
 
-        /** What a geom stands for, stored as the geom's data. */
-        struct GeomTag
-        {
-            enum class Kind
-            {
-                Floor,
-                Robot,
-                Body
-            };
-            Kind kind{Kind::Floor};
-            std::size_t sceneBody{0};  ///< for Kind::Body
-        };
-
         dMatrix3 &toOde(const Eigen::Matrix3d &rotation, dMatrix3 &out)
         {
             for (int r = 0; r < 3; ++r)
@@ -60,6 +47,19 @@ namespace ompl_phys
     /** ODE handles and the arrays ODE keeps pointers into (tags, convex data). */
     struct PhysicsWorld::Handles
     {
+        /** What a geom stands for, stored as the geom's data. */
+        struct GeomTag
+        {
+            enum class Kind
+            {
+                Floor,
+                Robot,
+                Body
+            };
+            Kind kind{Kind::Floor};
+            std::size_t sceneBody{0};  ///< for Kind::Body
+        };
+
         dWorldID world{nullptr};
         dSpaceID space{nullptr};
         dJointGroupID contacts{nullptr};
@@ -103,7 +103,7 @@ namespace ompl_phys
         dWorldSetAutoDisableFlag(h.world, 0);
 
         h.tags.reserve(2 + scene_->bodies.size());
-        h.tags.push_back({GeomTag::Kind::Floor, 0});
+        h.tags.push_back({Handles::GeomTag::Kind::Floor, 0});
         dGeomSetData(dCreatePlane(h.space, 0.0, 0.0, 1.0, 0.0), &h.tags.back());
 
         dBodyID robot = dBodyCreate(h.world);
@@ -112,7 +112,7 @@ namespace ompl_phys
         dBodySetMass(robot, &robotMass);
         dGeomID robotGeom = dCreateSphere(h.space, scene_->robot.radius);
         dGeomSetBody(robotGeom, robot);
-        h.tags.push_back({GeomTag::Kind::Robot, 0});
+        h.tags.push_back({Handles::GeomTag::Kind::Robot, 0});
         dGeomSetData(robotGeom, &h.tags.back());
         h.bodies.push_back(robot);
 
@@ -124,7 +124,7 @@ namespace ompl_phys
                 throw ompl::Exception("PhysicsWorld",
                                       "body '" + body.name + "': a prism can only be a fixed body");
             dGeomID geom = createShapeGeom(h.space, body.shape, h.prisms);
-            h.tags.push_back({GeomTag::Kind::Body, i});
+            h.tags.push_back({Handles::GeomTag::Kind::Body, i});
             dGeomSetData(geom, &h.tags.back());
             if (body.kind == BodyKind::Fixed)
             {
@@ -238,11 +238,11 @@ namespace ompl_phys
                                    sizeof(dContactGeom));
         if (count == 0)
             return;
-        const auto *tagA = static_cast<const GeomTag *>(dGeomGetData(a));
-        const auto *tagB = static_cast<const GeomTag *>(dGeomGetData(b));
-        if (tagA->kind == GeomTag::Kind::Robot && tagB->kind == GeomTag::Kind::Body)
+        const auto *tagA = static_cast<const Handles::GeomTag *>(dGeomGetData(a));
+        const auto *tagB = static_cast<const Handles::GeomTag *>(dGeomGetData(b));
+        if (tagA->kind == Handles::GeomTag::Kind::Robot && tagB->kind == Handles::GeomTag::Kind::Body)
             touches_.push_back(tagB->sceneBody);
-        if (tagB->kind == GeomTag::Kind::Robot && tagA->kind == GeomTag::Kind::Body)
+        if (tagB->kind == Handles::GeomTag::Kind::Robot && tagA->kind == Handles::GeomTag::Kind::Body)
             touches_.push_back(tagA->sceneBody);
         for (int i = 0; i < count; ++i)
             deepest_ = std::max(deepest_, points[i].depth);
@@ -250,8 +250,8 @@ namespace ompl_phys
             return;
 
         const bool robotOnFloor =
-            (tagA->kind == GeomTag::Kind::Robot && tagB->kind == GeomTag::Kind::Floor) ||
-            (tagB->kind == GeomTag::Kind::Robot && tagA->kind == GeomTag::Kind::Floor);
+            (tagA->kind == Handles::GeomTag::Kind::Robot && tagB->kind == Handles::GeomTag::Kind::Floor) ||
+            (tagB->kind == Handles::GeomTag::Kind::Robot && tagA->kind == Handles::GeomTag::Kind::Floor);
         dContact contact{};
         contact.surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
         contact.surface.mu = robotOnFloor ? scene_->materials.robotFloor : scene_->materials.defaultMu;

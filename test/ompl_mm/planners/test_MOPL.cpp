@@ -316,9 +316,9 @@ TEST(MOPLParameters, MetricWeightsMustNotBeNegative)
               "MOPL: joint_weight must be in [0, 100], got -1");
     EXPECT_EQ(ompl_core::test::exceptionOf([&] { params.setParam("contact_distance", "11"); }),
               "MOPL: contact_distance must be in [0, 10], got 11");
-    for (const char *name : {"robot_weight", "joint_weight", "base_joint_weight", "tool_weight", "rotation_weight",
-                             "moving_object_penalty", "move_to_object_penalty", "move_to_object_factor",
-                             "contact_distance"})
+    for (const char *name :
+         {"robot_weight", "joint_weight", "base_joint_weight", "tool_weight", "rotation_weight",
+          "moving_object_penalty", "move_to_object_penalty", "move_to_object_factor", "contact_distance"})
     {
         const std::string before = params.getParam(name)->getValue();
         EXPECT_THROW(params.setParam(name, "-0.5"), std::runtime_error) << name;
