@@ -67,7 +67,6 @@ namespace ompl_mm
             convex->computeLocalAABB();
             return convex;
         }
-
     }  // namespace
 
     std::shared_ptr<fcl::CollisionGeometryd> makeCollisionGeometry(const Shape &shape, MeshCollision meshes)

@@ -19,7 +19,6 @@ namespace ompl_mm
         {
             return std::abs(std::remainder(to - from, 2.0 * M_PI));
         }
-
     }  // namespace
 
     MotionBounds::MotionBounds(ManipulationModelPtr model) : model_(std::move(model))

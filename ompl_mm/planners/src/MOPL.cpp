@@ -86,10 +86,13 @@ namespace ompl_mm
                                    &MOPL::getRestartIterations, "0:1000:1000000");
         declareParam<unsigned int>("smoothing_attempts", this, &MOPL::setSmoothingAttempts,
                                    &MOPL::getSmoothingAttempts, "0:1:10000");
-        // weights below 0 would let the nearest-neighbour search's lower bounds prune the nearest vertex
-        auto weight = [this](const std::string &name, double ManipulationMetric::Weights::*field,
-                             const char *range, double high)
+        // weights below 0 would let the nearest-neighbour search's lower bounds prune the nearest
+        // vertex: a weight must lie in its range "0.:STEP:HIGH."
+        auto weight =
+            [this](const std::string &name, double ManipulationMetric::Weights::*field, const char *range)
         {
+            const std::string suggestion = range;
+            const double high = std::stod(suggestion.substr(suggestion.rfind(':') + 1));
             params().declareParam<double>(
                 name,
                 [this, name, field, high](double v)
@@ -100,20 +103,17 @@ namespace ompl_mm
                     metric_->setWeights(weights);
                 },
                 [this, field]() { return metric_->weights().*field; });
-            params()[name].setRangeSuggestion(range);
+            params()[name].setRangeSuggestion(suggestion);
         };
-        weight("robot_weight", &ManipulationMetric::Weights::robotWeight, "0.:0.1:100.", 100.0);
-        weight("joint_weight", &ManipulationMetric::Weights::jointWeight, "0.:0.1:100.", 100.0);
-        weight("base_joint_weight", &ManipulationMetric::Weights::baseWeight, "0.:0.1:100.", 100.0);
-        weight("tool_weight", &ManipulationMetric::Weights::toolWeight, "0.:0.1:100.", 100.0);
-        weight("rotation_weight", &ManipulationMetric::Weights::rotationWeight, "0.:0.1:100.", 100.0);
-        weight("moving_object_penalty", &ManipulationMetric::Weights::movingObjectPenalty, "0.:0.1:100.",
-               100.0);
-        weight("move_to_object_penalty", &ManipulationMetric::Weights::moveToObjectPenalty, "0.:0.1:100.",
-               100.0);
-        weight("move_to_object_factor", &ManipulationMetric::Weights::moveToObjectFactor, "0.:0.1:100.",
-               100.0);
-        weight("contact_distance", &ManipulationMetric::Weights::contactDistance, "0.:0.01:10.", 10.0);
+        weight("robot_weight", &ManipulationMetric::Weights::robotWeight, "0.:0.1:100.");
+        weight("joint_weight", &ManipulationMetric::Weights::jointWeight, "0.:0.1:100.");
+        weight("base_joint_weight", &ManipulationMetric::Weights::baseWeight, "0.:0.1:100.");
+        weight("tool_weight", &ManipulationMetric::Weights::toolWeight, "0.:0.1:100.");
+        weight("rotation_weight", &ManipulationMetric::Weights::rotationWeight, "0.:0.1:100.");
+        weight("moving_object_penalty", &ManipulationMetric::Weights::movingObjectPenalty, "0.:0.1:100.");
+        weight("move_to_object_penalty", &ManipulationMetric::Weights::moveToObjectPenalty, "0.:0.1:100.");
+        weight("move_to_object_factor", &ManipulationMetric::Weights::moveToObjectFactor, "0.:0.1:100.");
+        weight("contact_distance", &ManipulationMetric::Weights::contactDistance, "0.:0.01:10.");
         auto probability =
             [this](const std::string &name, double ModalSampler::Probabilities::*field, double low = 0.0)
         {

@@ -94,6 +94,7 @@ namespace ompl_phys
         initialiseOde();
         movable_ = scene_->movableBodies();
         Handles &h = *handles_;
+        using TagKind = Handles::GeomTag::Kind;
         h.world = dWorldCreate();
         h.space = dSimpleSpaceCreate(nullptr);  // few geoms; a fixed visiting order keeps runs identical
         h.contacts = dJointGroupCreate(0);
@@ -103,7 +104,7 @@ namespace ompl_phys
         dWorldSetAutoDisableFlag(h.world, 0);
 
         h.tags.reserve(2 + scene_->bodies.size());
-        h.tags.push_back({Handles::GeomTag::Kind::Floor, 0});
+        h.tags.push_back({TagKind::Floor, 0});
         dGeomSetData(dCreatePlane(h.space, 0.0, 0.0, 1.0, 0.0), &h.tags.back());
 
         dBodyID robot = dBodyCreate(h.world);
@@ -112,7 +113,7 @@ namespace ompl_phys
         dBodySetMass(robot, &robotMass);
         dGeomID robotGeom = dCreateSphere(h.space, scene_->robot.radius);
         dGeomSetBody(robotGeom, robot);
-        h.tags.push_back({Handles::GeomTag::Kind::Robot, 0});
+        h.tags.push_back({TagKind::Robot, 0});
         dGeomSetData(robotGeom, &h.tags.back());
         h.bodies.push_back(robot);
 
@@ -124,7 +125,7 @@ namespace ompl_phys
                 throw ompl::Exception("PhysicsWorld",
                                       "body '" + body.name + "': a prism can only be a fixed body");
             dGeomID geom = createShapeGeom(h.space, body.shape, h.prisms);
-            h.tags.push_back({Handles::GeomTag::Kind::Body, i});
+            h.tags.push_back({TagKind::Body, i});
             dGeomSetData(geom, &h.tags.back());
             if (body.kind == BodyKind::Fixed)
             {
@@ -238,20 +239,20 @@ namespace ompl_phys
                                    sizeof(dContactGeom));
         if (count == 0)
             return;
+        using TagKind = Handles::GeomTag::Kind;
         const auto *tagA = static_cast<const Handles::GeomTag *>(dGeomGetData(a));
         const auto *tagB = static_cast<const Handles::GeomTag *>(dGeomGetData(b));
-        if (tagA->kind == Handles::GeomTag::Kind::Robot && tagB->kind == Handles::GeomTag::Kind::Body)
+        if (tagA->kind == TagKind::Robot && tagB->kind == TagKind::Body)
             touches_.push_back(tagB->sceneBody);
-        if (tagB->kind == Handles::GeomTag::Kind::Robot && tagA->kind == Handles::GeomTag::Kind::Body)
+        if (tagB->kind == TagKind::Robot && tagA->kind == TagKind::Body)
             touches_.push_back(tagA->sceneBody);
         for (int i = 0; i < count; ++i)
             deepest_ = std::max(deepest_, points[i].depth);
         if (!createContacts_)
             return;
 
-        const bool robotOnFloor =
-            (tagA->kind == Handles::GeomTag::Kind::Robot && tagB->kind == Handles::GeomTag::Kind::Floor) ||
-            (tagB->kind == Handles::GeomTag::Kind::Robot && tagA->kind == Handles::GeomTag::Kind::Floor);
+        const bool robotOnFloor = (tagA->kind == TagKind::Robot && tagB->kind == TagKind::Floor) ||
+                                  (tagB->kind == TagKind::Robot && tagA->kind == TagKind::Floor);
         dContact contact{};
         contact.surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
         contact.surface.mu = robotOnFloor ? scene_->materials.robotFloor : scene_->materials.defaultMu;
