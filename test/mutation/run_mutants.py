@@ -11,6 +11,7 @@ Usage:
 A mutant whose build fails is "stillborn" and is not counted; fix its text in mutants.txt.
 """
 import argparse
+import filecmp
 import os
 import shutil
 import subprocess
@@ -101,13 +102,15 @@ def main():
 
     src, build, log = (os.path.join(args.work, d) for d in ("src", "build", "log.txt"))
     os.makedirs(args.work, exist_ok=True)
-    # a fresh copy of the tracked sources (the working tree's, with uncommitted changes)
-    shutil.rmtree(src, ignore_errors=True)
+    # the tracked sources (the working tree's, with uncommitted changes); a file whose copy differs
+    # gets a new timestamp, so the build redoes whatever an interrupted run compiled from a mutant
     files = subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True, check=True).stdout.split()
     for name in files:
-        if os.path.isfile(os.path.join(ROOT, name)):
-            os.makedirs(os.path.dirname(os.path.join(src, name)), exist_ok=True)
-            shutil.copy2(os.path.join(ROOT, name), os.path.join(src, name))
+        source, copy = os.path.join(ROOT, name), os.path.join(src, name)
+        if os.path.isfile(source) and not (os.path.isfile(copy) and filecmp.cmp(source, copy, shallow=False)):
+            os.makedirs(os.path.dirname(copy), exist_ok=True)
+            shutil.copyfile(source, copy)
+            shutil.copymode(source, copy)
     for mutant in mutants:
         check_applies(mutant, src)
 
