@@ -13,19 +13,23 @@ namespace ompl_mm
         MOPL). With probability Probabilities::object one object is sampled on a support surface (at
         its start yaw) or, when enabled (setSampleInAir), in a sampling region "in the air" (the
         place chosen uniformly among surfaces and regions; the robot then left undefined until a
-        grasp of the object is found, PartialState::graspedObject), and the robot and every other object are
-       each left undefined, set to their start value, or set to their goal value; otherwise the robot is
-       sampled (uniformly, or at the far end of the search: the goal pose for the forward tree, the start pose
-       for the backward tree) and the objects are chosen the same way. A goal value the goal does not define
-       is left undefined.
+        grasp of the object is found, PartialState::graspedObject), and the robot and every other
+        object are each left undefined, set to their start value, or set to their goal value;
+        otherwise the robot is sampled (uniformly, or at the far end of the search: the goal pose
+        for the forward tree, the start pose for the backward tree) and the objects are chosen the
+        same way. A goal value the goal does not define is left undefined.
 
-       Objects in play: those the goal constrains and those a tree vertex has moved from their
-       start (noteVertex). An object
-       sample picks among the objects in play, or with Probabilities::anyObject among all objects
-       (always, while every object is in play or none is); an object not in play stands at its
-       start in every vertex, so samples set it there (and so do the goal roots made from them,
-       which would otherwise scatter it). So objects that do not matter to the task cost the search
-       little, and every object keeps a chance to be sampled. */
+        Objects the goal leaves free are always left undefined in samples for the forward tree (an
+        object sample still places them anywhere): they take the nearest vertex's values, so the
+        metric does not charge the vertices that have pushed them out of the way.
+
+        Objects in play: those the goal constrains and those a tree vertex has moved from their
+        start (noteVertex). An object sample picks among the objects in play, or with
+        Probabilities::anyObject among all objects (always, while every object is in play or none
+        is); an object not in play stands at its start in every vertex, so samples for the backward
+        tree set it there (and so do the goal roots made from them, which would otherwise scatter
+        it). So objects that do not matter to the task cost the search little, and every object
+        keeps a chance to be sampled. */
     class ModalSampler
     {
     public:
@@ -69,8 +73,9 @@ namespace ompl_mm
         void putInPlay(unsigned int object);
         /** The object of an object sample. */
         unsigned int chooseObject(ompl::RNG &rng) const;
-        /** Sets one part (0 robot, 1 + i object i) to undefined, its start or its goal value. */
-        void chooseFixedValue(PartialState &out, unsigned int part, ompl::RNG &rng) const;
+        /** Sets one part (0 robot, 1 + i object i) of a sample for the forward or backward tree to
+            undefined, its start or its goal value. */
+        void chooseFixedValue(PartialState &out, unsigned int part, bool forwardTree, ompl::RNG &rng) const;
         /** Samples the object on a surface or, when enabled, in a region; true when in a region. */
         bool sampleObject(PartialState &out, unsigned int object, ompl::RNG &rng) const;
         void sampleRobot(PartialState &out, bool forwardTree, ompl::RNG &rng) const;

@@ -47,9 +47,18 @@ namespace ompl_mm
         space_->freeState(goalState_);
     }
 
-    void ModalSampler::chooseFixedValue(PartialState &out, unsigned int part, ompl::RNG &rng) const
+    void ModalSampler::chooseFixedValue(PartialState &out, unsigned int part, bool forwardTree,
+                                        ompl::RNG &rng) const
     {
         const bool isRobot = part == 0;
+        if (!isRobot && forwardTree && !goal_->constrainsObject(part - 1))
+        {
+            // taken from the nearest vertex: a start value here would make the metric charge every
+            // vertex that has moved the object (in clutter, those beyond the objects pushed out of
+            // the way) and pull the start tree back to where it stood before those pushes
+            out.setObjectDefined(part - 1, false);
+            return;
+        }
         if (!isRobot && !inPlay_[part - 1])
         {
             // where it stands in every vertex; defined, so that goal roots made from the sample
@@ -135,15 +144,15 @@ namespace ompl_mm
                 out.setGraspedObject(static_cast<int>(chosen));
             }
             else
-                chooseFixedValue(out, 0, rng);
+                chooseFixedValue(out, 0, forwardTree, rng);
             for (unsigned int i = 0; i < objects; ++i)
                 if (i != chosen)
-                    chooseFixedValue(out, 1 + i, rng);
+                    chooseFixedValue(out, 1 + i, forwardTree, rng);
             return;
         }
         out.setGraspedObject(-1);
         sampleRobot(out, forwardTree, rng);
         for (unsigned int i = 0; i < objects; ++i)
-            chooseFixedValue(out, 1 + i, rng);
+            chooseFixedValue(out, 1 + i, forwardTree, rng);
     }
 }  // namespace ompl_mm

@@ -181,15 +181,33 @@ TEST_F(Sampler, ObjectsNotSampledFollowTheProbabilities)
     EXPECT_NEAR(rate(obj3[Undefined], t.notSampled[OBJ3]), 0.4, TOLERANCE);
     EXPECT_NEAR(rate(obj3[Start], t.notSampled[OBJ3]), 0.3, TOLERANCE);
     EXPECT_NEAR(rate(obj3[Goal], t.notSampled[OBJ3]), 0.3, TOLERANCE);
-    // obj1 has none and no vertex has moved it (not in play): it stays at its start
-    EXPECT_EQ(t.objectNotSampled[OBJ1][Start], t.notSampled[OBJ1]);
+    // obj1 has none: the forward tree takes it from the nearest vertex
+    EXPECT_EQ(t.objectNotSampled[OBJ1][Undefined], t.notSampled[OBJ1]);
 }
 
-TEST_F(Sampler, ObjectsInPlayWithoutGoalAreUndefinedOrAtTheirStart)
+TEST_F(Sampler, ObjectsWithoutGoalStayUndefinedForTheForwardTreeEvenInPlay)
 {
     ob::State *moved = startCopy();
     setObject(space_, moved, OBJ1, 1.5, -2.0);
-    const Tally t = run(true, 25, [&](ModalSampler &sampler) { sampler.noteVertex(moved); });
+    const Tally t = run(true, 28, [&](ModalSampler &sampler) { sampler.noteVertex(moved); });
+    EXPECT_GT(t.notSampled[OBJ1], SAMPLES / 2);
+    EXPECT_EQ(t.objectNotSampled[OBJ1][Undefined], t.notSampled[OBJ1]);
+    // the goal's object keeps its three choices
+    EXPECT_NEAR(rate(t.objectNotSampled[OBJ3][Start], t.notSampled[OBJ3]), 0.3, TOLERANCE);
+}
+
+TEST_F(Sampler, BackwardSamplesSetObjectsOutOfPlayToTheirStart)
+{
+    const Tally t = run(false, 29);
+    // obj1 has no goal and no vertex has moved it (not in play): goal roots leave it at its start
+    EXPECT_EQ(t.objectNotSampled[OBJ1][Start], t.notSampled[OBJ1]);
+}
+
+TEST_F(Sampler, BackwardSamplesLeaveObjectsInPlayWithoutGoalUndefinedOrAtTheirStart)
+{
+    ob::State *moved = startCopy();
+    setObject(space_, moved, OBJ1, 1.5, -2.0);
+    const Tally t = run(false, 25, [&](ModalSampler &sampler) { sampler.noteVertex(moved); });
     // obj1's "goal value" choice leaves it undefined
     const auto &obj1 = t.objectNotSampled[OBJ1];
     EXPECT_EQ(obj1[Goal], 0);
