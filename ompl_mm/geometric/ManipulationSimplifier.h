@@ -18,7 +18,9 @@ namespace ompl_mm
            left where it was (the pushes become the robot's transits, routed around the object
            where they meet it) or, when that fails, the return push ends early (where it found the
            object, or at one of its waypoints short of the start) and the object stays there for
-           the rest of the way, if the goal still holds;
+           the rest of the way, if the goal still holds; then every push run ends as early as
+           it may (dropped, or ended at one of its waypoints, the object staying there for the rest
+           of the way) when the goal still holds and the tool travels no farther;
         2. replans random windows of the path, from the start of one primitive run to the end of
            a later one, with the empty-space planner (the primitives chained straight from the
            window's first to its last state: one push instead of several of the same object, no
@@ -41,6 +43,7 @@ namespace ompl_mm
         struct Outcome
         {
             unsigned int roundTripsRemoved{0};  ///< objects no longer pushed away and back
+            unsigned int pushesShortened{0};    ///< push runs ended early or dropped
             unsigned int windowsReplanned{0};   ///< windows replaced by shorter primitive chains
         };
 
@@ -69,6 +72,12 @@ namespace ompl_mm
     private:
         /** Removes one round trip if it can; true when the path changed. */
         bool removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng) const;
+        /** Ends each push run at its earliest waypoint after which the object may stay where it
+            is for the rest of the way (holdObject), the run's start first (no push at all), when
+            the end still satisfies goal and the tool travels no farther; returns how many runs
+            changed. */
+        unsigned int shortenPushes(ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng,
+                                   const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Keeps `object` at `pose` in states first … last (the path's states elsewhere unchanged):
             its pushes become the robot's transits, and where the robot's old motion meets the
             object it is routed around it (TransitConnector). True when that gives valid motions and

@@ -3,6 +3,7 @@
 #include <ompl/geometric/PathSimplifier.h>
 #include <ompl/util/Exception.h>
 
+#include <algorithm>
 #include <limits>
 
 namespace ompl_mm
@@ -93,6 +94,7 @@ namespace ompl_mm
         path.removeRepeatedStates();
         while (!ptc && removeRoundTrip(path, goal, rng))
             ++outcome.roundTripsRemoved;
+        outcome.pushesShortened = shortenPushes(path, goal, rng, ptc);
         // windows from one primitive run's start to a later run's end: what OMPL's shortcuts cannot
         // do, since they keep every manipulation, is to chain primitives anew across runs
         for (unsigned int attempt = 0; attempt < windowAttempts && !ptc; ++attempt)
@@ -163,6 +165,66 @@ namespace ompl_mm
         return false;
     }
 
+    unsigned int ManipulationSimplifier::shortenPushes(ManipulationPath &path, const ompl::base::Goal *goal,
+                                                       ompl::RNG &rng,
+                                                       const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        struct Run
+        {
+            unsigned int object;
+            std::size_t first, end;
+        };
+        std::vector<Run> runs;
+        for (unsigned int object = 0; object < space_->objectCount(); ++object)
+            for (const auto &[first, end] : pushRuns(path, object))
+                runs.push_back({object, first, end});
+        // the last run first: a change replaces the states from inside its run on, so the runs
+        // before it keep their indices
+        std::sort(runs.begin(), runs.end(), [](const Run &a, const Run &b) { return a.first > b.first; });
+        unsigned int shortened = 0;
+        for (const Run &run : runs)
+        {
+            if (ptc)
+                break;
+            // the object stays where the run found it at waypoint `stop` for the rest of the way
+            const auto heldFrom = [&](std::size_t stop, ManipulationPath &held)
+            {
+                const ObjectPose pose = space_->objectPose(path.getState(stop), run.object);
+                return holdObject(held, run.object, pose, stop, path.getStateCount() - 1, goal, rng) &&
+                       held.toolPathLength() <= path.toolPathLength();
+            };
+            ManipulationPath best(path);
+            if (heldFrom(run.first, best))
+            {
+                path = best;
+                ++shortened;
+                continue;
+            }
+            // no push at all fails: bisect for the earliest waypoint of the run that will do (the
+            // run's end, the push as it is, always does)
+            bool found = false;
+            for (std::size_t fails = run.first, does = run.end; does - fails > 1;)
+            {
+                const std::size_t middle = fails + (does - fails) / 2;
+                ManipulationPath held(path);
+                if (heldFrom(middle, held))
+                {
+                    best = held;
+                    found = true;
+                    does = middle;
+                }
+                else
+                    fails = middle;
+            }
+            if (found)
+            {
+                path = best;
+                ++shortened;
+            }
+        }
+        return shortened;
+    }
+
     bool ManipulationSimplifier::holdObject(ManipulationPath &path, unsigned int object,
                                             const ObjectPose &pose, std::size_t first, std::size_t last,
                                             const ompl::base::Goal *goal, ompl::RNG &rng) const
@@ -172,6 +234,15 @@ namespace ompl_mm
         {
             held.push_back(si_->cloneState(path.getState(k)));
             space_->setObjectPose(held.back(), object, pose);
+        }
+        const bool endKept =
+            last + 1 < path.getStateCount() || space_->equalStates(held.back(), path.getState(last));
+        // the end decides before any routing is tried
+        if (!(endKept || (goal && goal->isSatisfied(held.back()))))
+        {
+            for (ompl::base::State *state : held)
+                si_->freeState(state);
+            return false;
         }
         Trajectory result(space_);
         result.reset(held[0]);
@@ -195,11 +266,9 @@ namespace ompl_mm
                      connector_.connect(result, held[next], CONNECT_ITERATIONS, rng);
             k = next;
         }
-        const bool endKept =
-            last + 1 < path.getStateCount() || space_->equalStates(held.back(), path.getState(last));
         for (ompl::base::State *state : held)
             si_->freeState(state);
-        if (!routed || !(endKept || (goal && goal->isSatisfied(result.back()))))
+        if (!routed)
             return false;
         path.replace(first, last, result);
         return true;

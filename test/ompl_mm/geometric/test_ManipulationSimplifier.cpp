@@ -1,11 +1,13 @@
-// Tests for ManipulationSimplifier: a push there and back becomes no push at all, windows get
-// shorter and stay valid, the same seed gives the same path, and it refuses a space information
-// without the manipulation motion validator.
+// Tests for ManipulationSimplifier: a push there and back becomes no push at all, a push ends where
+// the way no longer needs it, windows get shorter and stay valid, the same seed gives the same path,
+// and it refuses a space information without the manipulation motion validator.
 #include "ompl_mm/geometric/ManipulationSimplifier.h"
 
 #include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
+
+#include <initializer_list>
 
 using namespace ompl_mm;
 using namespace ompl_mm::test;
@@ -56,6 +58,17 @@ namespace
                 path.appendFirst(state);
             else
                 path.appendLabelled(state, label);
+        }
+
+        /** The robot comes from (0, 0.7) and pushes obj2 north from (0, 1.4) through each of ys. */
+        ManipulationPath pushedNorth(std::initializer_list<double> ys)
+        {
+            ManipulationPath path(si_);
+            append(path, 0.0, 0.7, 0.0, 1.4, TRANSIT);
+            append(path, 0.0, 1.4 - STANDOFF, 0.0, 1.4, TRANSIT);
+            for (const double y : ys)
+                append(path, 0.0, y - STANDOFF, 0.0, y, PUSH_OBJ2);
+            return path;
         }
 
         /** obj2 pushed 0.3 m north, the robot walks around it to the north and pushes it back;
@@ -208,6 +221,56 @@ TEST_F(SimplifierBlocked, AReturnEndsEarlyAlsoWhenTheObjectIsPushedOnLater)
     append(path, 0.45, 0.2, 1.0, -0.1, TRANSIT);
     append(path, 0.8, 0.45, 1.0, -0.1, TRANSIT);
     expectReturnEndedAtItsSecondWaypoint(path);
+}
+
+TEST_F(Simplifier, APushNobodyNeedsIsDropped)
+{
+    // obj2 pushed 0.3 m north, then the robot leaves south-west: obj2 was in nobody's way
+    ManipulationPath path = pushedNorth({1.55, 1.7});
+    append(path, -0.6, 0.9, 0.0, 1.7, TRANSIT);
+    ASSERT_TRUE(path.check());
+    const double length = path.toolPathLength();
+    const RobotAt goal(si_, -0.6, 0.9);
+    ompl::RNG rng(3);
+    EXPECT_EQ(simplifier_.simplify(path, 0, rng, &goal).pushesShortened, 1u);
+    EXPECT_EQ(path.primitiveCounts().at("push"), 0u);
+    EXPECT_TRUE(path.check());
+    EXPECT_EQ(path.checkLabels(), "");
+    EXPECT_LE(path.toolPathLength(), length);
+    const ob::State *end = path.getState(path.getStateCount() - 1);
+    EXPECT_TRUE(goal.isSatisfied(end));
+    EXPECT_FALSE(space_.objectMoves(end, path.getState(0), 1)) << "obj2 stays where it stood";
+}
+
+TEST_F(Simplifier, APushEndsAtItsFirstWaypointThatClearsTheWay)
+{
+    // obj2 pushed 0.6 m north so that the robot can stand where it stood: the push that needs
+    // ends at 1.85 m (at 1.7 m obj2 would still touch the robot's end)
+    ManipulationPath path = pushedNorth({1.55, 1.7, 1.85, 2.0});
+    append(path, 0.0, 1.4, 0.0, 2.0, TRANSIT);
+    ASSERT_TRUE(path.check());
+    const double length = path.toolPathLength();
+    const RobotAt goal(si_, 0.0, 1.4);
+    ompl::RNG rng(3);
+    EXPECT_EQ(simplifier_.simplify(path, 0, rng, &goal).pushesShortened, 1u);
+    EXPECT_TRUE(path.check());
+    EXPECT_EQ(path.checkLabels(), "");
+    EXPECT_LT(path.toolPathLength(), length);
+    const ob::State *end = path.getState(path.getStateCount() - 1);
+    EXPECT_TRUE(goal.isSatisfied(end));
+    EXPECT_NEAR((space_.objectPosition(end, 1) - Eigen::Vector3d(0.0, 1.85, 0.0)).norm(), 0.0, 1e-12);
+}
+
+TEST_F(Simplifier, APushStaysWhenNothingSaysTheEndMayChange)
+{
+    // without a goal the path's end, obj2 where the push leaves it, stays as it is
+    ManipulationPath path = pushedNorth({1.55, 1.7});
+    append(path, -0.6, 0.9, 0.0, 1.7, TRANSIT);
+    ompl::RNG rng(3);
+    EXPECT_EQ(simplifier_.simplify(path, 0, rng, nullptr).pushesShortened, 0u);
+    EXPECT_EQ(path.primitiveCounts().at("push"), 1u);
+    const ob::State *end = path.getState(path.getStateCount() - 1);
+    EXPECT_NEAR((space_.objectPosition(end, 1) - Eigen::Vector3d(0.0, 1.7, 0.0)).norm(), 0.0, 1e-12);
 }
 
 TEST_F(Simplifier, ShortensTransitsAndPushRuns)
