@@ -80,11 +80,11 @@ namespace ompl_mm
                                    const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Keeps `object` at `pose` in states first … last (the path's states elsewhere unchanged):
             its pushes become the robot's transits, and where the robot's old motion meets the
-            object it is routed around it (TransitConnector). True when that gives valid motions and
-            the end still satisfies goal (the path then changed). */
+            object it is routed around it (TransitConnector, within routeIterations). True when that
+            gives valid motions and the end still satisfies goal (the path then changed). */
         bool holdObject(ManipulationPath &path, unsigned int object, const ObjectPose &pose,
                         std::size_t first, std::size_t last, const ompl::base::Goal *goal,
-                        ompl::RNG &rng) const;
+                        unsigned int routeIterations, ompl::RNG &rng) const;
         /** Shortens path with one round of the steps of OMPL's PathSimplifier (see the class
             comment). */
         void shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng) const;

@@ -13,8 +13,10 @@ namespace ompl_mm
         constexpr double SAME_POSE = 1e-6;
         // calls of OMPL's shortcutPath in a round, each trying as many shortcuts as the path has states
         constexpr unsigned int SHORTCUT_PASSES = 5;
-        // RRT iterations to route the robot around an object it no longer pushes
+        // RRT iterations to route the robot around an object it no longer pushes: after a round
+        // trip, and (fewer: each push run tries several waypoints) after a push that ends early
         constexpr unsigned int CONNECT_ITERATIONS = 500;
+        constexpr unsigned int SHORTER_PUSH_CONNECT_ITERATIONS = 50;
 
         /** The runs of consecutive segments that push `object`: first and last state of each. */
         std::vector<std::pair<std::size_t, std::size_t>> pushRuns(const ManipulationPath &path,
@@ -154,11 +156,12 @@ namespace ompl_mm
                     // leave the object where it was; or, when that fails, end the return early (where
                     // it found the object, or at one of its waypoints short of the start) and leave
                     // the object there for the rest of the way
-                    if (holdObject(path, object, before, runs[i].first, runs[j].second, goal, rng))
+                    if (holdObject(path, object, before, runs[i].first, runs[j].second, goal, CONNECT_ITERATIONS,
+                                   rng))
                         return true;
                     for (std::size_t stop = runs[j].first; stop < runs[j].second; ++stop)
                         if (holdObject(path, object, space_->objectPose(path.getState(stop), object), stop,
-                                       path.getStateCount() - 1, goal, rng))
+                                       path.getStateCount() - 1, goal, CONNECT_ITERATIONS, rng))
                             return true;
                 }
         }
@@ -190,7 +193,8 @@ namespace ompl_mm
             const auto heldFrom = [&](std::size_t stop, ManipulationPath &held)
             {
                 const ObjectPose pose = space_->objectPose(path.getState(stop), run.object);
-                return holdObject(held, run.object, pose, stop, path.getStateCount() - 1, goal, rng) &&
+                return holdObject(held, run.object, pose, stop, path.getStateCount() - 1, goal,
+                                  SHORTER_PUSH_CONNECT_ITERATIONS, rng) &&
                        held.toolPathLength() <= path.toolPathLength();
             };
             ManipulationPath best(path);
@@ -227,7 +231,8 @@ namespace ompl_mm
 
     bool ManipulationSimplifier::holdObject(ManipulationPath &path, unsigned int object,
                                             const ObjectPose &pose, std::size_t first, std::size_t last,
-                                            const ompl::base::Goal *goal, ompl::RNG &rng) const
+                                            const ompl::base::Goal *goal, unsigned int routeIterations,
+                                            ompl::RNG &rng) const
     {
         std::vector<ompl::base::State *> held;
         for (std::size_t k = first; k <= last; ++k)
@@ -263,7 +268,7 @@ namespace ompl_mm
                    !si_->isValid(held[next]))
                 ++next;
             routed = next < held.size() && !space_->anyObjectMoves(held[k], held[next]) &&
-                     connector_.connect(result, held[next], CONNECT_ITERATIONS, rng);
+                     connector_.connect(result, held[next], routeIterations, rng);
             k = next;
         }
         for (ompl::base::State *state : held)
