@@ -156,8 +156,8 @@ namespace ompl_mm
                     // leave the object where it was; or, when that fails, end the return early (where
                     // it found the object, or at one of its waypoints short of the start) and leave
                     // the object there for the rest of the way
-                    if (holdObject(path, object, before, runs[i].first, runs[j].second, goal, CONNECT_ITERATIONS,
-                                   rng))
+                    if (holdObject(path, object, before, runs[i].first, runs[j].second, goal,
+                                   CONNECT_ITERATIONS, rng))
                         return true;
                     for (std::size_t stop = runs[j].first; stop < runs[j].second; ++stop)
                         if (holdObject(path, object, space_->objectPose(path.getState(stop), object), stop,
@@ -168,9 +168,9 @@ namespace ompl_mm
         return false;
     }
 
-    unsigned int ManipulationSimplifier::shortenPushes(ManipulationPath &path, const ompl::base::Goal *goal,
-                                                       ompl::RNG &rng,
-                                                       const ompl::base::PlannerTerminationCondition &ptc) const
+    unsigned int ManipulationSimplifier::shortenPushes(
+        ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng,
+        const ompl::base::PlannerTerminationCondition &ptc) const
     {
         struct Run
         {
