@@ -190,24 +190,20 @@ namespace ompl_mm
             if (ptc)
                 break;
             // the object stays where the run found it at waypoint `stop` for the rest of the way
+            const double length = path.toolPathLength();
             const auto heldFrom = [&](std::size_t stop, ManipulationPath &held)
             {
                 const ObjectPose pose = space_->objectPose(path.getState(stop), run.object);
                 return holdObject(held, run.object, pose, stop, path.getStateCount() - 1, goal,
                                   SHORTER_PUSH_CONNECT_ITERATIONS, rng) &&
-                       held.toolPathLength() <= path.toolPathLength();
+                       held.toolPathLength() <= length;
             };
+            // no push at all first; else bisect for the earliest waypoint of the run that will do
+            // (the run's end, the push as it is, always does)
             ManipulationPath best(path);
-            if (heldFrom(run.first, best))
-            {
-                path = best;
-                ++shortened;
-                continue;
-            }
-            // no push at all fails: bisect for the earliest waypoint of the run that will do (the
-            // run's end, the push as it is, always does)
-            bool found = false;
-            for (std::size_t fails = run.first, does = run.end; does - fails > 1;)
+            const bool dropped = heldFrom(run.first, best);
+            bool found = dropped;
+            for (std::size_t fails = run.first, does = run.end; !dropped && does - fails > 1;)
             {
                 const std::size_t middle = fails + (does - fails) / 2;
                 ManipulationPath held(path);
