@@ -26,10 +26,10 @@ namespace ompl_mm
 
     /** Collision checking of one manipulation configuration with FCL: robot links, movable
         objects and the fixed obstacles (in a broad-phase tree). It applies the contact rules of the
-        state-based validity: a held object may touch the gripper (the tool link and the links below
-        it), a resting object may touch the obstacle its surface belongs to, listed robot link pairs
-        are ignored, adjacent links never collide with each other, and neither do links that touch
-        in the zero pose and in at least ALWAYS_TOUCHING_SHARE of SELF_CHECK_POSES random poses
+        state-based validity: a held object may touch the gripper (the tool link, the links below
+        it and the scene's gripper links), a resting object may touch the obstacle its surface belongs to,
+       listed robot link pairs are ignored, adjacent links never collide with each other, and neither do links
+       that touch in the zero pose and in at least ALWAYS_TOUCHING_SHARE of SELF_CHECK_POSES random poses
         (they are built to touch, like an SRDF's "default" and "always" pairs; listed with
         OMPL_INFORM). Robot link meshes collide as the scene's RobotSpec::meshCollision says (the
         robot attribute meshes="exact" or "convex_hull"): as their triangles (a surface: a body
@@ -123,6 +123,9 @@ namespace ompl_mm
         /** Drops from selfPairs_ the pairs that touch in the zero pose and in nearly every random
             pose. */
         void dropAlwaysTouchingPairs();
+        /** True when a held object may touch link: the tool link, the links below it and the
+            scene's gripper links (RobotSpec::gripperLinks, an SRDF's end effector). */
+        bool isGripperLink(int link) const;
 
         struct Body
         {

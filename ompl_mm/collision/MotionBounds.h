@@ -57,7 +57,9 @@ namespace ompl_mm
         /** A moving joint above a link, and how it moves the link's points. */
         struct Lever
         {
-            int variable;          ///< the joint's index in the joint vector
+            int joint;             ///< the joint's index in RobotModel::joints()
+            int variable;          ///< the joint's variable (for a mimic joint, its leader's)
+            double gain;           ///< the joint's change per change of its variable (a mimic's multiplier)
             bool translates;       ///< a prismatic joint with a fixed world axis
             Eigen::Vector3d axis;  ///< that axis, when it translates
             double length;         ///< for a turning joint: bound on its distance to the link's origin

@@ -17,7 +17,8 @@ namespace ompl_mm
     {
     public:
         /** The chain of robot from its root to link tip, whose tool frame is tool in the tip link's
-            frame. @throws ompl::Exception when tip is not a link's index. */
+            frame. @throws ompl::Exception when tip is not a link's index or the chain passes through a
+            mimic joint. */
         KinematicChain(const RobotModel &robot, int tip,
                        const Eigen::Isometry3d &tool = Eigen::Isometry3d::Identity());
 

@@ -9,7 +9,8 @@
 
 namespace ompl_mm
 {
-    /** The file a URDF mesh element's filename names: a relative name against the URDF's folder;
+    /** The file a URDF mesh element's filename names: a relative name against the URDF's folder,
+        then against each of its ancestors (PyBullet-style paths, relative to a folder above the URDF);
         "package://NAME/PATH" against each folder of the environment variable OMPL_MM_PACKAGE_PATH
         (colon-separated, like ROS_PACKAGE_PATH) that holds NAME/PATH, then against the URDF's
         ancestors that hold NAME/PATH (so the package folder itself is found from inside it);

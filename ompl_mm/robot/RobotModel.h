@@ -43,15 +43,27 @@ namespace ompl_mm
         Eigen::Vector3d axis{Eigen::Vector3d::UnitX()};           ///< unit axis in the joint frame
         double lower{0.0};  ///< lower limit, metres or radians (-pi for continuous joints)
         double upper{0.0};  ///< upper limit, metres or radians (pi for continuous joints)
-        int variable{-1};   ///< index in the joint vector, -1 for fixed joints
+        int variable{
+            -1};  ///< index in the joint vector (for a mimic joint, its leader's), -1 for fixed joints
+        /** The joint this one follows (URDF `<mimic>`): its index in RobotModel::joints(), -1 for a
+            joint of its own. A mimic joint's value is multiplier * leader + offset; it adds no
+            variable. */
+        int mimics{-1};
+        double multiplier{1.0};  ///< a mimic joint's factor on its leader's value; 1 otherwise
+        double offset{0.0};      ///< a mimic joint's offset, metres or radians; 0 otherwise
+
+        /** The joint's value for the joint vector q (its variable's, or its leader's scaled and
+            offset). @pre variable >= 0. */
+        double value(const double *q) const { return multiplier * q[variable] + offset; }
     };
 
     /** A robot read from a URDF file: a tree of links joined by fixed, prismatic, revolute or
         continuous joints, with forward kinematics for every link frame and the links' collision
-        shapes. Serial arms, humanoid torsos and mobile bases (two prismatic joints) are all trees.
-        Copyable value type; immutable after loading. Links are stored parents first (the root is
-        link 0), so forward kinematics is one pass; moving joints are numbered depth first, in file
-        order within a branch. */
+        shapes. A joint with a URDF `<mimic>` follows its leader (a mimic of a mimic follows the
+        first leader) and adds no dimension to the configuration space. Serial arms, humanoid torsos and
+       mobile bases (two prismatic joints) are all trees. Copyable value type; immutable after loading. Links
+       are stored parents first (the root is link 0), so forward kinematics is one pass; moving joints are
+       numbered depth first, in file order within a branch. */
     class RobotModel
     {
     public:
@@ -66,6 +78,14 @@ namespace ompl_mm
             @throws ompl_core::InputError as fromUrdfFile(). */
         static RobotModel fromUrdfString(const std::string &urdf, const std::string &sourceName);
 
+        /** The same robot with some moving joints held still: each becomes a fixed joint at its
+            value, and so do the mimic joints that follow it; the other variables keep their order.
+            @throws ompl_core::InputError (without a location: the caller knows where the values
+            come from) naming the joint when it is no moving joint of the robot (the message lists
+            them), when it is a mimic joint (its leader is named), or when the value lies outside
+            its limits. */
+        RobotModel withJointsFixed(const std::vector<std::pair<std::string, double>> &values) const;
+
         /** The robot's name from the URDF. */
         const std::string &name() const { return name_; }
         /** All links, parents before children; link 0 is the root. */
@@ -76,8 +96,10 @@ namespace ompl_mm
         /** Number of moving joints (the dimension of the robot's configuration space). */
         unsigned int dof() const { return dof_; }
 
-        /** The moving joint with variable index i. @pre i < dof(). */
+        /** The moving joint with variable index i (never a mimic joint). @pre i < dof(). */
         const Joint &variableJoint(unsigned int i) const { return joints_[variableJoints_[i]]; }
+        /** The names of the moving joints in variable order, comma-separated, for messages. */
+        std::string variableNames() const;
 
         /** True when every moving joint is prismatic (false for a robot without moving joints). */
         bool allJointsPrismatic() const;
@@ -106,6 +128,10 @@ namespace ompl_mm
         Eigen::Isometry3d linkFrame(const double *q, const Eigen::Isometry3d &base, int link) const;
 
     private:
+        /** Numbers the moving joints that are no mimic joints in link order (depth first) and
+            gives each mimic joint its leader's variable. */
+        void numberVariables();
+
         std::string name_;
         std::vector<Link> links_;
         std::vector<Joint> joints_;

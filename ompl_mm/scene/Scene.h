@@ -134,6 +134,15 @@ namespace ompl_mm
         ompl_core::SourceLocation where;                        ///< where the scene declares it, for messages
     };
 
+    /** A moving joint the scene holds still (e.g. a gripper kept open): it is no planning
+        dimension, and start and goal leave it out. */
+    struct FixedJointValue
+    {
+        std::string joint;                ///< the URDF joint's name (a moving joint, no mimic joint)
+        double value{0.0};                ///< its value, metres or radians, within its limits
+        ompl_core::SourceLocation where;  ///< where the scene fixes it, for messages
+    };
+
     /** What the collision checks take for the robot links' meshes. */
     enum class MeshCollision
     {
@@ -150,7 +159,14 @@ namespace ompl_mm
         Eigen::Vector3d toolOffset{Eigen::Vector3d::Zero()};        ///< tool point in the tool link frame
         std::vector<AllowedCollision> allowedCollisions;            ///< link pairs never checked
         std::vector<ToolFrame> tools;                               ///< named frames for inverse kinematics
-        MeshCollision meshCollision{MeshCollision::Exact};          ///< how link meshes collide
+        std::vector<FixedJointValue> fixedJoints;                   ///< joints held still, in file order
+        std::string srdfFile;  ///< absolute path of the robot's SRDF file (MoveIt's format); empty: none
+        std::string
+            group;  ///< the SRDF's planning group: its joints are planned, the others held; empty: all
+        /** Links besides the tool link's subtree that may touch a held object (the SRDF's end
+            effector links). */
+        std::vector<std::string> gripperLinks;
+        MeshCollision meshCollision{MeshCollision::Exact};  ///< how link meshes collide
         ompl_core::SourceLocation where;  ///< where the scene defines the robot, for messages
     };
 
@@ -172,8 +188,9 @@ namespace ompl_mm
     struct RobotGoal
     {
         std::vector<GoalCoordinate> joints;  ///< one entry per active joint; empty means "don't care"
-        double tolerance{0.01};              ///< per joint, joint units (metres or radians)
-        ompl_core::SourceLocation where;     ///< where the scene defines the goal, for messages
+        std::string state;       ///< a group state of the robot's SRDF giving the joints instead; empty: none
+        double tolerance{0.01};  ///< per joint, joint units (metres or radians)
+        ompl_core::SourceLocation where;  ///< where the scene defines the goal, for messages
     };
 
     /** A primitive the planner may use, with its parameters as written in the scene. */
@@ -202,6 +219,8 @@ namespace ompl_mm
         std::vector<SamplingRegion> samplingRegions;  ///< where held objects may be
         std::vector<MovableObject> objects;  ///< in state space order: object i is object i of the state
         std::vector<double> robotStart;      ///< one value per active joint
+        std::string
+            robotStartState;  ///< a group state of the robot's SRDF giving robotStart instead; empty: none
         ompl_core::SourceLocation robotStartWhere;  ///< where the scene gives the robot's start, for messages
         RobotGoal robotGoal;                        ///< the robot's part of the goal
         std::vector<ObjectGoal> objectGoals;        ///< goals of the objects that have one

@@ -53,7 +53,8 @@ namespace ompl_mm
         if (!robot_.joints.empty() && robot_.joints.size() != model.dof())
             throw ompl_core::InputError(robot_.where, "goal has " + std::to_string(robot_.joints.size()) +
                                                           " joint values but the robot has " +
-                                                          std::to_string(model.dof()) + " moving joints");
+                                                          std::to_string(model.dof()) + " moving joints (" +
+                                                          model.robot().variableNames() + ")");
         for (std::size_t j = 0; j < robot_.joints.size(); ++j)
         {
             const Joint &joint = model.robot().variableJoint(j);

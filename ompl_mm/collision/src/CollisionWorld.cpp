@@ -117,10 +117,10 @@ namespace ompl_mm
                         scene.robot.where,
                         label + ": " + e.what() + " (meshes=\"exact\" takes its triangles)");
                 }
-                robotBodies_.push_back(
-                    {std::make_unique<fcl::CollisionObjectd>(geometry), s.origin, static_cast<int>(l), label,
-                     robot.isInSubtree(static_cast<int>(l), model_->toolLink()), s.shape.boundingRadius(),
-                     ConvexShape::of(s.shape, scene.robot.meshCollision), std::nullopt});
+                robotBodies_.push_back({std::make_unique<fcl::CollisionObjectd>(geometry), s.origin,
+                                        static_cast<int>(l), label, isGripperLink(static_cast<int>(l)),
+                                        s.shape.boundingRadius(),
+                                        ConvexShape::of(s.shape, scene.robot.meshCollision), std::nullopt});
             }
 
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
@@ -194,6 +194,14 @@ namespace ompl_mm
             }
         linkFrames_.resize(robot.links().size());
         dropAlwaysTouchingPairs();
+    }
+
+    bool CollisionWorld::isGripperLink(int link) const
+    {
+        const RobotModel &robot = model_->robot();
+        const std::vector<std::string> &listed = model_->scene().robot.gripperLinks;
+        return robot.isInSubtree(link, model_->toolLink()) ||
+               std::find(listed.begin(), listed.end(), robot.links()[link].name) != listed.end();
     }
 
     void CollisionWorld::dropAlwaysTouchingPairs()

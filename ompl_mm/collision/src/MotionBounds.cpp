@@ -6,12 +6,15 @@ namespace ompl_mm
 {
     namespace
     {
-        /** The joint's farthest reach along its own motion: a prismatic joint's largest travel. */
-        double travelReach(const Joint &joint)
+        /** The joint's farthest reach along its own motion: a prismatic joint's largest travel (a
+            mimic joint's over its leader's limits). */
+        double travelReach(const RobotModel &robot, const Joint &joint)
         {
-            return joint.type == Joint::Type::Prismatic
-                       ? std::max(std::abs(joint.lower), std::abs(joint.upper))
-                       : 0.0;
+            if (joint.type != Joint::Type::Prismatic)
+                return 0.0;
+            const Joint &limits = joint.mimics >= 0 ? robot.joints()[joint.mimics] : joint;
+            return std::max(std::abs(joint.multiplier * limits.lower + joint.offset),
+                            std::abs(joint.multiplier * limits.upper + joint.offset));
         }
 
         /** The shorter turn from one yaw to another, radians in [0, pi]. */
@@ -37,14 +40,15 @@ namespace ompl_mm
             for (int link = static_cast<int>(l); robot.links()[link].parent >= 0;
                  link = robot.links()[link].parent)
             {
-                const Joint &joint = robot.joints()[robot.links()[link].joint];
+                const int index = robot.links()[link].joint;
+                const Joint &joint = robot.joints()[index];
                 if (joint.variable >= 0)
                 {
                     const bool turns = joint.type != Joint::Type::Prismatic;
-                    chain.push_back(
-                        {joint.variable, false, frames[link].linear() * joint.axis, length, turns});
+                    chain.push_back({index, joint.variable, joint.multiplier, false,
+                                     frames[link].linear() * joint.axis, length, turns});
                 }
-                length += joint.origin.translation().norm() + travelReach(joint);
+                length += joint.origin.translation().norm() + travelReach(robot, joint);
             }
             // a prismatic joint translates exactly when nothing above it turns
             bool turnsAbove = false;
@@ -62,7 +66,7 @@ namespace ompl_mm
         BodySweep sweep;
         for (const Lever &lever : levers_[link])
         {
-            const double change = q2[lever.variable] - q1[lever.variable];
+            const double change = lever.gain * (q2[lever.variable] - q1[lever.variable]);
             if (lever.translates)
                 sweep.translation += change * lever.axis;
             else
@@ -81,9 +85,9 @@ namespace ompl_mm
             {
                 bool shared = false;
                 for (const Lever &above : levers_[other])
-                    shared = shared || above.variable == lever.variable;
+                    shared = shared || above.joint == lever.joint;
                 if (!shared)
-                    rate += std::abs(q2[lever.variable] - q1[lever.variable]) *
+                    rate += std::abs(lever.gain * (q2[lever.variable] - q1[lever.variable])) *
                             (lever.turns ? lever.length + reach : 1.0);
             }
             return rate;

@@ -14,6 +14,14 @@ namespace ompl_mm
         out << "# segment object tool.x tool.y tool.z";
         for (unsigned int j = 0; j < model.dof(); ++j)
             out << ' ' << model.robot().variableJoint(j).name;
+        std::vector<const Joint *> mimics;  // written after the planning joints, for readers that
+                                            // pose the robot joint by joint
+        for (const Joint &joint : model.robot().joints())
+            if (joint.mimics >= 0)
+            {
+                mimics.push_back(&joint);
+                out << ' ' << joint.name;
+            }
         for (const MovableObject &object : model.scene().objects)
             out << ' ' << object.name << ".x " << object.name << ".y " << object.name << ".z " << object.name
                 << ".yaw";
@@ -34,6 +42,8 @@ namespace ompl_mm
             out << ' ' << tool.x() << ' ' << tool.y() << ' ' << tool.z();
             for (unsigned int j = 0; j < model.dof(); ++j)
                 out << ' ' << space->robotValues(state)[j];
+            for (const Joint *mimic : mimics)
+                out << ' ' << mimic->value(space->robotValues(state));
             for (unsigned int o = 0; o < model.objectCount(); ++o)
             {
                 const ObjectPose pose = space->objectPose(state, o);

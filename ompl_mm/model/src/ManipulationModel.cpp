@@ -15,8 +15,15 @@ namespace ompl_mm
         {
             throw ompl_core::InputError(scene_.robot.where, e.what());
         }
-        toolPointChain_.emplace(robot_, toolLink_,
-                                Eigen::Isometry3d(Eigen::Translation3d(scene_.robot.toolOffset)));
+        try
+        {
+            toolPointChain_.emplace(robot_, toolLink_,
+                                    Eigen::Isometry3d(Eigen::Translation3d(scene_.robot.toolOffset)));
+        }
+        catch (const ompl::Exception &e)
+        {
+            throw ompl_core::InputError(scene_.robot.where, e.what());
+        }
         for (const ToolFrame &tool : scene_.robot.tools)
         {
             const int link = robot_.findLink(tool.link);
@@ -24,7 +31,14 @@ namespace ompl_mm
                 throw ompl_core::InputError(tool.where, "tool frame '" + tool.name + "' names link '" +
                                                             tool.link + "', which robot '" + robot_.name() +
                                                             "' does not have");
-            toolChains_.emplace_back(tool.name, KinematicChain(robot_, link, tool.pose));
+            try
+            {
+                toolChains_.emplace_back(tool.name, KinematicChain(robot_, link, tool.pose));
+            }
+            catch (const ompl::Exception &e)
+            {
+                throw ompl_core::InputError(tool.where, e.what());
+            }
         }
     }
 

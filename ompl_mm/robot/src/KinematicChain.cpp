@@ -22,6 +22,13 @@ namespace ompl_mm
             pending = pending * joint.origin;
             if (joint.type == Joint::Type::Fixed)
                 continue;
+            // inverse kinematics moves each chain joint's variable on its own
+            if (joint.mimics >= 0)
+                throw ompl::Exception("KinematicChain", "the chain to link '" + robot.links()[tip].name +
+                                                            "' passes through joint '" + joint.name +
+                                                            "', which follows another (<mimic>): inverse "
+                                                            "kinematics cannot solve for it; fix the joint "
+                                                            "(<fixed_joint>) or choose a tool link above it");
             ChainJoint chainJoint{pending,
                                   joint.axis,
                                   joint.type == Joint::Type::Prismatic,

@@ -42,8 +42,21 @@ namespace ompl_mm
             std::string name = filename;
             if (name.compare(0, FILE_SCHEME.size(), FILE_SCHEME) == 0)
                 name = name.substr(FILE_SCHEME.size());
-            const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : urdfFolder / name;
-            return tryPath(path.lexically_normal(), tried) ? path.lexically_normal().string() : "";
+            if (fs::path(name).is_absolute())
+                return tryPath(fs::path(name).lexically_normal(), tried)
+                           ? fs::path(name).lexically_normal().string()
+                           : "";
+            // the URDF's folder, then its ancestors: PyBullet-style descriptions write their mesh
+            // paths relative to a search path above the URDF (the repository's root)
+            for (fs::path ancestor = urdfFolder; !ancestor.empty(); ancestor = ancestor.parent_path())
+            {
+                const fs::path path = (ancestor / name).lexically_normal();
+                if (tryPath(path, tried))
+                    return path.string();
+                if (ancestor == ancestor.root_path())
+                    break;
+            }
+            return "";
         }
         const std::string rest = filename.substr(PACKAGE_SCHEME.size());
         const std::string package = rest.substr(0, rest.find('/'));

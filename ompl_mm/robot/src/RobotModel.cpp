@@ -273,8 +273,8 @@ namespace ompl_mm
             return joints;
         }
 
-        /** Frame of a joint's child in its parent's frame for joint values q. */
-        Eigen::Isometry3d jointTransform(const Joint &joint, const double *q)
+        /** Frame of a joint's child in its parent's frame when the joint takes value. */
+        Eigen::Isometry3d jointMotion(const Joint &joint, double value)
         {
             Eigen::Isometry3d transform = joint.origin;
             switch (joint.type)
@@ -282,14 +282,82 @@ namespace ompl_mm
                 case Joint::Type::Fixed:
                     break;
                 case Joint::Type::Prismatic:
-                    transform.translate(joint.axis * q[joint.variable]);
+                    transform.translate(joint.axis * value);
                     break;
                 case Joint::Type::Revolute:
                 case Joint::Type::Continuous:
-                    transform.rotate(Eigen::AngleAxisd(q[joint.variable], joint.axis));
+                    transform.rotate(Eigen::AngleAxisd(value, joint.axis));
                     break;
             }
             return transform;
+        }
+
+        /** Frame of a joint's child in its parent's frame for joint values q. */
+        Eigen::Isometry3d jointTransform(const Joint &joint, const double *q)
+        {
+            return joint.type == Joint::Type::Fixed ? joint.origin : jointMotion(joint, joint.value(q));
+        }
+
+        /** A URDF <mimic> as written: the follower's index and its leader's name. */
+        struct MimicElement
+        {
+            int joint;
+            std::string leader;
+            double multiplier;
+            double offset;
+        };
+
+        /** Makes each follower follow the first leader of its chain of mimics, composing the
+            factors, so a joint's value never needs more than one step. */
+        void resolveMimics(std::vector<Joint> &joints, const std::vector<MimicElement> &mimics,
+                           const UrdfSource &source)
+        {
+            const auto indexOf = [&joints](const std::string &name)
+            {
+                for (std::size_t j = 0; j < joints.size(); ++j)
+                    if (joints[j].name == name)
+                        return static_cast<int>(j);
+                return -1;
+            };
+            const auto written = [&mimics](int joint) -> const MimicElement *
+            {
+                for (const MimicElement &mimic : mimics)
+                    if (mimic.joint == joint)
+                        return &mimic;
+                return nullptr;
+            };
+            for (const MimicElement &mimic : mimics)
+            {
+                Joint &follower = joints[mimic.joint];
+                double multiplier = mimic.multiplier;
+                double offset = mimic.offset;
+                std::string leaderName = mimic.leader;
+                for (std::size_t step = 0;; ++step)
+                {
+                    const int leader = indexOf(leaderName);
+                    if (leader < 0)
+                        throw source.jointError(follower.name, "<mimic> names joint '" + leaderName +
+                                                                   "', which the robot does not have");
+                    if (joints[leader].type == Joint::Type::Fixed)
+                        throw source.jointError(follower.name,
+                                                "<mimic> follows joint '" + leaderName + "', which is fixed");
+                    const MimicElement *next = written(leader);
+                    if (next == nullptr)
+                    {
+                        follower.mimics = leader;
+                        break;
+                    }
+                    if (step == mimics.size())
+                        throw source.jointError(follower.name,
+                                                "its <mimic> joints follow each other in a cycle");
+                    // value = m * (m' * q + o') + o
+                    offset += multiplier * next->offset;
+                    multiplier *= next->multiplier;
+                    leaderName = next->leader;
+                }
+                follower.multiplier = multiplier;
+                follower.offset = offset;
+            }
         }
 
         void checkLinkIndex(int link, std::size_t count)
@@ -324,6 +392,7 @@ namespace ompl_mm
 
         RobotModel robot;
         robot.name_ = model->getName();
+        std::vector<MimicElement> mimics;
         // depth first from the root, so each branch's variables are contiguous; entries are a link,
         // its parent's index and the joint from the parent (null for the root)
         std::vector<std::tuple<urdf::LinkConstSharedPtr, int, urdf::JointConstSharedPtr>> stack{
@@ -336,11 +405,9 @@ namespace ompl_mm
             if (urdfJoint)
             {
                 Joint joint = toJoint(*urdfJoint, source);
-                if (joint.type != Joint::Type::Fixed)
-                {
-                    joint.variable = static_cast<int>(robot.dof_++);
-                    robot.variableJoints_.push_back(static_cast<int>(robot.joints_.size()));
-                }
+                if (urdfJoint->mimic && joint.type != Joint::Type::Fixed)
+                    mimics.push_back({static_cast<int>(robot.joints_.size()), urdfJoint->mimic->joint_name,
+                                      urdfJoint->mimic->multiplier, urdfJoint->mimic->offset});
                 link.joint = static_cast<int>(robot.joints_.size());
                 robot.joints_.push_back(std::move(joint));
             }
@@ -351,7 +418,69 @@ namespace ompl_mm
             for (auto it = children.rbegin(); it != children.rend(); ++it)
                 stack.emplace_back(model->getLink((*it)->child_link_name), index, *it);
         }
+        resolveMimics(robot.joints_, mimics, source);
+        robot.numberVariables();
         return robot;
+    }
+
+    void RobotModel::numberVariables()
+    {
+        dof_ = 0;
+        variableJoints_.clear();
+        for (const Link &link : links_)
+            if (link.joint >= 0)
+            {
+                Joint &joint = joints_[link.joint];
+                joint.variable = -1;
+                if (joint.type != Joint::Type::Fixed && joint.mimics < 0)
+                {
+                    joint.variable = static_cast<int>(dof_++);
+                    variableJoints_.push_back(link.joint);
+                }
+            }
+        for (Joint &joint : joints_)
+            if (joint.mimics >= 0)
+                joint.variable = joints_[joint.mimics].variable;
+    }
+
+    RobotModel RobotModel::withJointsFixed(const std::vector<std::pair<std::string, double>> &values) const
+    {
+        RobotModel robot = *this;
+        for (const auto &[name, value] : values)
+        {
+            auto it = std::find_if(robot.joints_.begin(), robot.joints_.end(),
+                                   [&name = name](const Joint &joint) { return joint.name == name; });
+            if (it == robot.joints_.end() || it->type == Joint::Type::Fixed)
+                throw ompl_core::InputError("robot '" + name_ + "' has no moving joint '" + name +
+                                            "' (its moving joints: " + robot.variableNames() + ")");
+            if (it->mimics >= 0)
+                throw ompl_core::InputError("joint '" + name + "' follows joint '" +
+                                            robot.joints_[it->mimics].name + "' (<mimic>); fix that one");
+            if (!(value >= it->lower && value <= it->upper))
+                throw ompl_core::InputError("joint '" + name + "': value " + format(value) +
+                                            " lies outside its limits [" + format(it->lower) + ", " +
+                                            format(it->upper) + "]");
+            const int leader = static_cast<int>(it - robot.joints_.begin());
+            for (Joint &joint : robot.joints_)
+                if (&joint == &*it || joint.mimics == leader)
+                {
+                    joint.origin = jointMotion(joint, joint.multiplier * value + joint.offset);
+                    joint.type = Joint::Type::Fixed;
+                    joint.mimics = -1;
+                    joint.multiplier = 1.0;
+                    joint.offset = 0.0;
+                }
+        }
+        robot.numberVariables();
+        return robot;
+    }
+
+    std::string RobotModel::variableNames() const
+    {
+        std::string names;
+        for (unsigned int i = 0; i < dof_; ++i)
+            names += (i == 0 ? "" : ", ") + variableJoint(i).name;
+        return names;
     }
 
     int RobotModel::findLink(const std::string &name) const

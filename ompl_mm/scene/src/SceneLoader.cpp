@@ -71,7 +71,10 @@ namespace ompl_mm
             void readRobot(const ompl_core::XmlElement &element);
             /** A <tool name link> with an optional <origin>. */
             ToolFrame readToolFrame(const ompl_core::XmlElement &element);
-            std::string resolveUrdf(const ompl_core::XmlElement &element) const;
+            /** The file an attribute of element names (URDF or SRDF), relative to the scene's folder;
+                an error at the attribute when it is no regular file. */
+            std::string resolveFile(const ompl_core::XmlElement &element, const char *attribute,
+                                    const std::string &kind) const;
             /** The name of an obstacle or object, which carries no other attribute; obstacles and
                 objects share one name space, the collision world's. */
             std::string claimBodyName(const ompl_core::XmlElement &element);
@@ -81,6 +84,9 @@ namespace ompl_mm
             void readObject(const ompl_core::XmlElement &element);
             void readStart(const ompl_core::XmlElement &element);
             void readStartObject(const ompl_core::XmlElement &element, ompl_core::FirstUses &started);
+            /** The state attribute of a start's or goal's robot element, or "" when it gives joints
+                (exactly one of the two); a name needs the robot's SRDF. */
+            std::string readStateName(const ompl_core::XmlElement &element, const std::string &parent) const;
             void checkResting(const ompl_core::XmlElement &element, const MovableObject &object) const;
             void readGoal(const ompl_core::XmlElement &element);
             void readGoalObject(const ompl_core::XmlElement &element, ompl_core::FirstUses &goals);
@@ -131,10 +137,15 @@ namespace ompl_mm
 
         void SceneParser::readRobot(const ompl_core::XmlElement &element)
         {
-            element.checkAttributes({"urdf", "tool_link", "meshes"});
+            element.checkAttributes({"urdf", "tool_link", "meshes", "srdf", "group"});
             RobotSpec &robot = scene_.robot;
             robot.where = element.where();
-            robot.urdfFile = resolveUrdf(element);
+            robot.urdfFile = resolveFile(element, "urdf", "URDF");
+            if (element.has("srdf"))
+                robot.srdfFile = resolveFile(element, "srdf", "SRDF");
+            robot.group = element.text("group", "");
+            if (!robot.group.empty() && robot.srdfFile.empty())
+                element.fail("group", "a planning group needs an SRDF file that defines it (attribute srdf)");
             robot.toolLink = element.text("tool_link");
             const std::string meshes = element.text("meshes", "exact");
             if (meshes == "convex_hull")
@@ -142,10 +153,18 @@ namespace ompl_mm
             else if (meshes != "exact")
                 element.fail("meshes", "attribute 'meshes' of " + element.tag() +
                                            " must be \"exact\" or \"convex_hull\", got '" + meshes + "'");
-            ompl_core::FirstUses singles, toolNames;
+            ompl_core::FirstUses singles, toolNames, fixedNames;
             for (const ompl_core::XmlElement &child :
-                 element.children({"origin", "tool_offset", "allow_collision", "tool"}))
+                 element.children({"origin", "tool_offset", "allow_collision", "tool", "fixed_joint"}))
             {
+                if (child.name() == "fixed_joint")
+                {
+                    ompl_core::checkLeaf(child, {"name", "value"});
+                    robot.fixedJoints.push_back({child.text("name"), child.number("value"), child.where()});
+                    ompl_core::claimName(fixedNames, child, robot.fixedJoints.back().joint,
+                                         "joint '" + robot.fixedJoints.back().joint + "' is fixed twice");
+                    continue;
+                }
                 if (child.name() == "tool")
                 {
                     robot.tools.push_back(readToolFrame(child));
@@ -185,15 +204,17 @@ namespace ompl_mm
             return tool;
         }
 
-        std::string SceneParser::resolveUrdf(const ompl_core::XmlElement &element) const
+        std::string SceneParser::resolveFile(const ompl_core::XmlElement &element, const char *attribute,
+                                             const std::string &kind) const
         {
-            const std::string urdf = element.text("urdf");
-            fs::path path(urdf);
+            const std::string file = element.text(attribute);
+            fs::path path(file);
             if (path.is_relative())
                 path = fs::path(baseDir_) / path;
             std::error_code error;
             if (!fs::is_regular_file(path, error))
-                element.fail("urdf", "URDF file '" + urdf + "' not found (looked for " + path.string() + ")");
+                element.fail(attribute,
+                             kind + " file '" + file + "' not found (looked for " + path.string() + ")");
             const fs::path absolute = fs::absolute(path, error);
             return (error ? path : absolute).lexically_normal().string();
         }
@@ -290,9 +311,11 @@ namespace ompl_mm
                     continue;
                 }
                 ompl_core::claimOnce(singles, child, element);
-                ompl_core::checkLeaf(child, {"joints"});
-                scene_.robotStart = child.numbers("joints", 0);
+                ompl_core::checkLeaf(child, {"joints", "state"});
                 scene_.robotStartWhere = child.where();
+                scene_.robotStartState = readStateName(child, "start");
+                if (scene_.robotStartState.empty())
+                    scene_.robotStart = child.numbers("joints", 0);
             }
             if (singles.empty())
                 element.fail("missing <robot joints=\"...\"/> in <start>");
@@ -302,6 +325,20 @@ namespace ompl_mm
                         object.where, "object '" + object.name + "' has no start: add <object name=\"" +
                                           object.name + "\" xyz=\"...\"/> to <start> (line " +
                                           std::to_string(element.where().line) + ")");
+        }
+
+        std::string SceneParser::readStateName(const ompl_core::XmlElement &element,
+                                               const std::string &parent) const
+        {
+            const bool joints = element.has("joints"), state = element.has("state");
+            if (joints == state)
+                element.fail("<robot> in <" + parent +
+                             "> needs either joints=\"...\" or state=\"NAME\" (a group state of the SRDF)");
+            // the robot element is read first, wherever it stands
+            if (state && scene_.robot.srdfFile.empty())
+                element.fail("state", "a named state needs an SRDF file (attribute srdf of <robot> at line " +
+                                          std::to_string(scene_.robot.where.line) + ")");
+            return state ? element.text("state") : "";
         }
 
         void SceneParser::readStartObject(const ompl_core::XmlElement &element, ompl_core::FirstUses &started)
@@ -346,9 +383,11 @@ namespace ompl_mm
                     continue;
                 }
                 ompl_core::claimOnce(singles, child, element);
-                ompl_core::checkLeaf(child, {"joints", "tolerance"});
+                ompl_core::checkLeaf(child, {"joints", "state", "tolerance"});
                 RobotGoal &goal = scene_.robotGoal;
-                goal.joints = child.coordinates("joints", 0);
+                goal.state = readStateName(child, "goal");
+                if (goal.state.empty())
+                    goal.joints = child.coordinates("joints", 0);
                 goal.tolerance = child.nonNegative("tolerance", goal.tolerance);
                 goal.where = child.where();
             }

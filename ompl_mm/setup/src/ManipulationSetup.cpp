@@ -4,6 +4,7 @@
 #include "ompl_mm/base/ManipulationStateSampler.h"
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 #include "ompl_mm/setup/ProblemCheck.h"
+#include "ompl_mm/setup/SceneRobot.h"
 
 #include <ompl/geometric/planners/est/EST.h>
 #include <ompl/geometric/planners/rrt/RRT.h>
@@ -15,28 +16,6 @@ namespace ompl_mm
 {
     namespace
     {
-        /** The scene's robot, which must have collision geometry: a robot without it would pass
-            through everything and every plan would be wrong. */
-        RobotModel loadRobot(const Scene &scene)
-        {
-            RobotModel robot;
-            try
-            {
-                robot = RobotModel::fromUrdfFile(scene.robot.urdfFile);
-            }
-            catch (const ompl::Exception &e)
-            {
-                throw ompl_core::InputError(scene.robot.where, e.what());
-            }
-            const std::vector<Link> &links = robot.links();
-            if (std::all_of(links.begin(), links.end(), [](const Link &link) { return link.shapes.empty(); }))
-                throw ompl_core::InputError(scene.robot.where,
-                                            "robot '" + robot.name() + "' (" + scene.robot.urdfFile +
-                                                ") has no collision geometry on any link: it would pass "
-                                                "through everything");
-            return robot;
-        }
-
         /** One of OMPL's planners on the setup, for tasks that need no manipulation: its uniform
             samples keep every object at its start pose, so that it grows transits (the motion
             validator rejects any other motion it tries). */
@@ -55,7 +34,8 @@ namespace ompl_mm
         {
             ManipulationSetup::plannerRegistry().require(scene.planner,
                                                          ompl_core::SourceLocation{scene.file, 0});
-            return std::make_shared<ManipulationModel>(scene, loadRobot(scene));
+            SceneRobot loaded = loadSceneRobot(scene);
+            return std::make_shared<ManipulationModel>(std::move(loaded.scene), std::move(loaded.robot));
         }
     }  // namespace
 
@@ -66,7 +46,7 @@ namespace ompl_mm
         model_ = space_->model();
         checker_ = std::make_shared<ManipulationValidityChecker>(si_);
         setStateValidityChecker(checker_);
-        setStartFromScene(scene);
+        setStartFromScene(model_->scene());
         goal_ = std::make_shared<ManipulationGoal>(si_);
         setGoal(goal_);
         primitives_ = factory.build(scene.primitives, space_.get());
@@ -141,7 +121,8 @@ namespace ompl_mm
             throw ompl_core::InputError(scene.robotStartWhere,
                                         "start has " + std::to_string(scene.robotStart.size()) +
                                             " joint values but robot '" + robot.name() + "' has " +
-                                            std::to_string(robot.dof()) + " moving joints");
+                                            std::to_string(robot.dof()) + " moving joints (" +
+                                            robot.variableNames() + ")");
         ompl::base::ScopedState<> start(space_);
         std::copy(scene.robotStart.begin(), scene.robotStart.end(), space_->robotValues(start.get()));
         for (unsigned int i = 0; i < model_->objectCount(); ++i)

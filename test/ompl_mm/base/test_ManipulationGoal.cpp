@@ -229,7 +229,7 @@ TEST(ManipulationGoalInput, RobotGoalNeedsOneValuePerJointOrNone)
     scene.robotGoal.joints.clear();
     EXPECT_EQ(setupError(scene), "");
     scene.robotGoal.joints = {0.0, 0.0, 0.0};
-    EXPECT_EQ(setupError(scene), line + "goal has 3 joint values but the robot has 2 moving joints");
+    EXPECT_EQ(setupError(scene), line + "goal has 3 joint values but the robot has 2 moving joints (x, y)");
     scene.robotGoal.joints = {std::nullopt, std::nullopt};
     EXPECT_EQ(setupError(scene), "");
 }

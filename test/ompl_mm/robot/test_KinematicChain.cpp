@@ -154,3 +154,25 @@ TEST(KinematicChain, PrismaticJointsMoveTheToolAlongTheirAxes)
     expected(1, 1) = 1.0;
     EXPECT_EQ(jacobian, expected);
 }
+
+TEST(KinematicChain, AChainThroughAMimicJointIsRefusedNamingIt)
+{
+    // inverse kinematics moves each chain joint's variable on its own, which a follower cannot do
+    const RobotModel robot =
+        RobotModel::fromUrdfFile(std::string(OMPL_MM_TEST_DATA_DIR) + "/robots/mimic_gripper.urdf");
+    std::string message;
+    try
+    {
+        KinematicChain chain(robot, robot.linkIndex("right_finger"));
+    }
+    catch (const ompl::Exception &e)
+    {
+        message = e.what();
+    }
+    EXPECT_NE(message.find("passes through joint 'right_finger_joint', which follows another"),
+              std::string::npos)
+        << message;
+    // a chain that stops above the fingers is fine, and so is the leader's own finger
+    EXPECT_EQ(KinematicChain(robot, robot.linkIndex("hand")).size(), 1u);
+    EXPECT_EQ(KinematicChain(robot, robot.linkIndex("left_finger")).size(), 2u);
+}

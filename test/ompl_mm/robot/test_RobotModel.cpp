@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ompl_core/io/InputFile.h"
 #include "ompl_mm/robot/RobotModel.h"
 
 #include "common/MobileBlocked.h"
@@ -305,9 +306,15 @@ namespace ompl_mm
                       "/dev/zero: is not a regular file, not a URDF file");
 
             const std::string mesh = ROBOTS_DIR + "bad_mesh.urdf";
+            // looked for beside the URDF first, then in each folder above it, up to the root
+            const std::string message = inputErrorOf([&] { RobotModel::fromUrdfFile(mesh); });
             EXPECT_EQ(
-                inputErrorOf([&] { RobotModel::fromUrdfFile(mesh); }),
-                mesh + ":5: link 'arm': mesh 'arm.stl' not found (looked for " + ROBOTS_DIR + "arm.stl)");
+                message.rfind(mesh + ":5: link 'arm': mesh 'arm.stl' not found (looked for " + ROBOTS_DIR +
+                                  "arm.stl, " + std::string(OMPL_MM_TEST_DATA_DIR) + "/arm.stl, ",
+                              0),
+                0u)
+                << message;
+            EXPECT_NE(message.find(", /arm.stl)"), std::string::npos) << message;
         }
 
         TEST(RobotModel, BadUrdfTextThrowsNamingSourceAndElement)
@@ -501,6 +508,152 @@ namespace ompl_mm
                 robot.linkFrame(q, Eigen::Isometry3d::Identity(), robot.linkIndex("body")) *
                 body.shapes[0].origin.translation();
             EXPECT_LT((centre - Eigen::Vector3d(1.25, -0.75, 0.25)).norm(), TOLERANCE);
+        }
+
+        /** A link frame computed joint by joint from the URDF's numbers (origins, axes, mimic
+            factors written out here), independent of RobotModel's tree. */
+        Eigen::Isometry3d mimicGripperFrame(const std::string &link, double wrist, double finger)
+        {
+            const auto pose = [](double x, double y, double z)
+            { return Eigen::Isometry3d(Eigen::Translation3d(x, y, z)); };
+            const Eigen::Isometry3d hand = pose(0, 0, 0.3) *
+                                           Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()) *
+                                           Eigen::AngleAxisd(wrist, Eigen::Vector3d::UnitZ());
+            if (link == "right_finger")
+                return hand * pose(0, -0.01, 0.05) * pose(0, -finger, 0);
+            const Eigen::Isometry3d left = hand * pose(0, 0.01, 0.05) * pose(0, finger, 0);
+            const double knuckle = 2.0 * finger + 0.1;
+            const Eigen::Isometry3d knuckleFrame =
+                left * pose(0, 0, 0.03) * Eigen::AngleAxisd(knuckle, Eigen::Vector3d::UnitX());
+            if (link == "knuckle")
+                return knuckleFrame;
+            return knuckleFrame * pose(0, 0, 0.02) *
+                   Eigen::AngleAxisd(-0.5 * knuckle, Eigen::Vector3d::UnitX());
+        }
+
+        TEST(RobotModel, MimicJointsFollowTheirLeaderAndAddNoVariable)
+        {
+            const RobotModel robot = load("mimic_gripper.urdf");
+            ASSERT_EQ(robot.dof(), 2u);
+            EXPECT_EQ(robot.variableNames(), "wrist, left_finger_joint");
+            EXPECT_EQ(robot.variableJoint(0).type, Joint::Type::Continuous);
+            const Joint &tip = robot.joints()[robot.links()[robot.linkIndex("tip")].joint];
+            EXPECT_EQ(robot.joints()[tip.mimics].name, "left_finger_joint");  // the first leader
+            EXPECT_DOUBLE_EQ(tip.multiplier, -1.0);
+            EXPECT_DOUBLE_EQ(tip.offset, -0.05);
+            std::mt19937 rng(5);
+            for (int trial = 0; trial < 20; ++trial)
+            {
+                const std::vector<double> q = randomJoints(robot, rng);
+                std::vector<Eigen::Isometry3d> frames;
+                robot.forwardKinematics(q.data(), Eigen::Isometry3d::Identity(), frames);
+                for (const char *link : {"right_finger", "knuckle", "tip"})
+                {
+                    const Eigen::Isometry3d expected = mimicGripperFrame(link, q[0], q[1]);
+                    EXPECT_LT(maxDifference(frames[robot.linkIndex(link)], expected), 1e-12) << link;
+                    EXPECT_LT(maxDifference(robot.linkFrame(q.data(), Eigen::Isometry3d::Identity(),
+                                                            robot.linkIndex(link)),
+                                            expected),
+                              1e-12)
+                        << link;
+                }
+            }
+        }
+
+        TEST(RobotModel, BadMimicsNameTheJointAndLine)
+        {
+            std::string urdf;
+            ompl_core::readInputFile(ROBOTS_DIR + "mimic_gripper.urdf", "URDF file").swap(urdf);
+            const auto lineOf = [&urdf](const std::string &text)
+            {
+                const std::string before = urdf.substr(0, urdf.find(text));
+                return std::to_string(1 + std::count(before.begin(), before.end(), '\n'));
+            };
+            const auto replaced = [&urdf](const std::string &from, const std::string &to)
+            {
+                std::string changed = urdf;
+                changed.replace(changed.find(from), from.size(), to);
+                return changed;
+            };
+            const std::string right = lineOf("<joint name=\"right_finger_joint\"");
+            EXPECT_EQ(inputErrorOf(
+                          [&]
+                          {
+                              RobotModel::fromUrdfString(replaced("<mimic joint=\"left_finger_joint\"/>",
+                                                                  "<mimic joint=\"thumb\"/>"),
+                                                         "g.urdf");
+                          }),
+                      "g.urdf:" + right +
+                          ": joint 'right_finger_joint': <mimic> names joint 'thumb', which the "
+                          "robot does not have");
+            const std::string fixedWrist = replaced("<joint name=\"wrist\" type=\"continuous\">",
+                                                    "<joint name=\"wrist\" type=\"fixed\">");
+            EXPECT_EQ(inputErrorOf(
+                          [&]
+                          {
+                              RobotModel::fromUrdfString(
+                                  [&]
+                                  {
+                                      std::string text = fixedWrist;
+                                      const std::string from = "<mimic joint=\"left_finger_joint\"/>";
+                                      text.replace(text.find(from), from.size(), "<mimic joint=\"wrist\"/>");
+                                      return text;
+                                  }(),
+                                  "g.urdf");
+                          }),
+                      "g.urdf:" + right +
+                          ": joint 'right_finger_joint': <mimic> follows joint 'wrist', which "
+                          "is fixed");
+            // the left finger following the tip closes a cycle: left -> tip -> knuckle -> left
+            const std::string cycle =
+                replaced("<limit lower=\"0\" upper=\"0.04\" effort=\"10\" velocity=\"0.1\"/>\n  </joint>",
+                         "<limit lower=\"0\" upper=\"0.04\" effort=\"10\" velocity=\"0.1\"/>\n"
+                         "    <mimic joint=\"tip_joint\"/>\n  </joint>");
+            const std::string message = inputErrorOf([&] { RobotModel::fromUrdfString(cycle, "g.urdf"); });
+            EXPECT_NE(message.find("follow each other in a cycle"), std::string::npos) << message;
+            EXPECT_EQ(message.rfind("g.urdf:", 0), 0u) << message;
+        }
+
+        TEST(RobotModel, FixedJointsKeepTheirFramesAndLeaveTheOthersInOrder)
+        {
+            const RobotModel robot = load("mimic_gripper.urdf");
+            const RobotModel held = robot.withJointsFixed({{"left_finger_joint", 0.03}});
+            ASSERT_EQ(held.dof(), 1u);
+            EXPECT_EQ(held.variableNames(), "wrist");
+            for (const Joint &joint : held.joints())
+                EXPECT_TRUE(joint.mimics < 0 && (joint.type == Joint::Type::Fixed) == (joint.name != "wrist"))
+                    << joint.name;
+            std::vector<Eigen::Isometry3d> full, fixed;
+            for (const double wrist : {-2.0, 0.0, 2.5})
+            {
+                const double q[] = {wrist, 0.03};
+                robot.forwardKinematics(q, someBase(), full);
+                held.forwardKinematics(q, someBase(), fixed);
+                for (std::size_t l = 0; l < full.size(); ++l)
+                    EXPECT_LT(maxDifference(full[l], fixed[l]), 1e-12) << robot.links()[l].name;
+            }
+            EXPECT_EQ(inputErrorOf(
+                          [&] {
+                              robot.withJointsFixed({{"thumb", 0.0}});
+                          }),
+                      "robot 'mimic_gripper' has no moving joint 'thumb' (its moving joints: wrist, "
+                      "left_finger_joint)");
+            EXPECT_EQ(inputErrorOf(
+                          [&] {
+                              robot.withJointsFixed({{"knuckle_joint", 0.0}});
+                          }),
+                      "joint 'knuckle_joint' follows joint 'left_finger_joint' (<mimic>); fix that one");
+            EXPECT_EQ(inputErrorOf(
+                          [&] {
+                              robot.withJointsFixed({{"left_finger_joint", 0.05}});
+                          }),
+                      "joint 'left_finger_joint': value 0.05 lies outside its limits [0, 0.04]");
+            EXPECT_EQ(
+                inputErrorOf(
+                    [&] {
+                        held.withJointsFixed({{"left_finger_joint", 0.01}});
+                    }),
+                "robot 'mimic_gripper' has no moving joint 'left_finger_joint' (its moving joints: wrist)");
         }
     }  // namespace
 }  // namespace ompl_mm

@@ -554,3 +554,55 @@ TEST(SceneLoader, ToolFrameErrors)
     expectError(replaced(2, robot + R"(<tool name="a" link="body"><origin/><origin/></tool></robot>)"), 2,
                 "origin");
 }
+
+TEST(SceneLoader, FixedJointsAreReadInFileOrder)
+{
+    const Scene scene = parseLines(replaced(
+        2,
+        R"(  <robot urdf="robots/mobile_disc.urdf" tool_link="body"><fixed_joint name="y" value="0.5"/><fixed_joint name="x" value="-1"/></robot>)"));
+    ASSERT_EQ(scene.robot.fixedJoints.size(), 2u);
+    EXPECT_EQ(scene.robot.fixedJoints[0].joint, "y");
+    EXPECT_EQ(scene.robot.fixedJoints[0].value, 0.5);
+    EXPECT_EQ(scene.robot.fixedJoints[0].where.line, 2);
+    EXPECT_EQ(scene.robot.fixedJoints[1].joint, "x");
+    EXPECT_EQ(scene.robot.fixedJoints[1].value, -1.0);
+}
+
+TEST(SceneLoader, FixedJointErrors)
+{
+    const std::string robot = R"(  <robot urdf="robots/mobile_disc.urdf" tool_link="body">)";
+    expectError(
+        replaced(2, robot + R"(<fixed_joint name="x" value="0"/><fixed_joint name="x" value="1"/></robot>)"),
+        2, "joint 'x' is fixed twice");
+    expectError(replaced(2, robot + R"(<fixed_joint name="x"/></robot>)"), 2, "value");
+    expectError(replaced(2, robot + R"(<fixed_joint name="x" value="open"/></robot>)"), 2, "value");
+    expectError(replaced(2, robot + R"(<fixed_joint name="x" value="0" unit="m"/></robot>)"), 2, "unit");
+}
+
+TEST(SceneLoader, SrdfGroupAndNamedStatesAreRead)
+{
+    std::vector<std::string> lines = replaced(
+        2,
+        R"(  <robot urdf="robots/panda/franka_panda/panda.urdf" srdf="robots/panda/franka_panda/panda.srdf" group="panda_arm" tool_link="panda_hand"/>)");
+    lines.at(6) = R"(    <robot state="ready"/>)";
+    lines.at(10) = R"(    <robot state="extended" tolerance="0.02"/><object name="obj1" xyz="1 * *"/>)";
+    const Scene scene = parseLines(lines);
+    EXPECT_EQ(scene.robot.srdfFile, SCENES_DIR + "/robots/panda/franka_panda/panda.srdf");
+    EXPECT_EQ(scene.robot.group, "panda_arm");
+    EXPECT_EQ(scene.robotStartState, "ready");
+    EXPECT_TRUE(scene.robotStart.empty());
+    EXPECT_EQ(scene.robotGoal.state, "extended");
+    EXPECT_EQ(scene.robotGoal.tolerance, 0.02);
+}
+
+TEST(SceneLoader, SrdfErrors)
+{
+    expectError(replaced(2, R"(  <robot urdf="robots/mobile_disc.urdf" srdf="none.srdf" tool_link="body"/>)"),
+                2, "SRDF file 'none.srdf' not found");
+    expectError(replaced(2, R"(  <robot urdf="robots/mobile_disc.urdf" group="arm" tool_link="body"/>)"), 2,
+                "a planning group needs an SRDF file");
+    expectError(replaced(7, R"(    <robot state="ready"/>)"), 7, "a named state needs an SRDF file");
+    expectError(replaced(7, R"(    <robot joints="0 0" state="ready"/>)"), 7,
+                "<robot> in <start> needs either joints=\"...\" or state=\"NAME\"");
+    expectError(replaced(7, R"(    <robot/>)"), 7, "<robot> in <start> needs either");
+}

@@ -157,6 +157,45 @@ TEST(ManipulationSetupInput, StartJointCountIsReportedAtTheStartLine)
     EXPECT_TRUE(contains(what, "2 moving joints")) << what;
 }
 
+TEST(ManipulationSetup, AFixedJointIsNoPlanningJointAndHoldsItsValue)
+{
+    // MOBILE BLOCKED's world with the base's y held where it starts: the robot transits along x
+    // alone (a push needs both base joints)
+    Scene scene = mobileBlockedScene();
+    const double y = scene.robotStart[1];
+    scene.robot.fixedJoints.push_back({"y", y, ompl_core::SourceLocation{"s.xml", 3}});
+    scene.robotStart = {scene.robotStart[0]};
+    scene.robotGoal.joints.resize(1);
+    scene.objectGoals.clear();
+    scene.primitives = {{"transit", {}, {}}};
+    ManipulationSetup setup(scene);
+    const ManipulationModel &model = *setup.manipulationSpace()->model();
+    ASSERT_EQ(model.dof(), 1u);
+    EXPECT_EQ(model.robot().variableNames(), "x");
+    EXPECT_EQ(setup.getStateSpace()->getDimension(), 1u + 4u * model.objectCount());
+    const double q[] = {0.25};
+    const Eigen::Vector3d body =
+        model.robot().linkFrame(q, scene.robot.basePose, model.robot().linkIndex("body")).translation() -
+        scene.robot.basePose.translation();
+    EXPECT_NEAR(body.x(), 0.25, 1e-12);
+    EXPECT_NEAR(body.y(), y, 1e-12);
+}
+
+TEST(ManipulationSetupInput, FixedJointFaultsAreReportedAtTheirLine)
+{
+    Scene scene = mobileBlockedScene();
+    scene.robot.fixedJoints.push_back({"z", 0.0, ompl_core::SourceLocation{"s.xml", 3}});
+    EXPECT_EQ(setupError(scene),
+              "s.xml:3: robot 'mobile_disc' has no moving joint 'z' (its moving joints: x, y)");
+    scene.robot.fixedJoints.back() = {"y", 3.0, ompl_core::SourceLocation{"s.xml", 4}};
+    EXPECT_EQ(setupError(scene), "s.xml:4: joint 'y': value 3 lies outside its limits [-2.5, 2.5]");
+    // the start still lists both joints: its count error names the one left to plan
+    scene.robot.fixedJoints.back().value = 0.0;
+    const std::string what = setupError(scene);
+    EXPECT_TRUE(contains(what, "start has 2 joint values but robot 'mobile_disc' has 1 moving joints (x)"))
+        << what;
+}
+
 TEST(ManipulationSetupInput, StartInCollisionNamesTheBodies)
 {
     Scene scene = mobileBlockedScene();
