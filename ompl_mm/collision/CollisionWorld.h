@@ -137,25 +137,47 @@ namespace ompl_mm
             double radius{0.0};   ///< bounding radius of the shape about its centre
             std::optional<ConvexShape>
                 convex;  ///< the shape for convexDistance(), unless it is no convex solid
+            /** For a mesh taken as its triangles, its convex hull (unless flat): hulls apart prove the
+                triangles apart, and the hull's distance bounds the triangles' from below, so most
+                queries skip the triangle hierarchy. */
+            std::optional<ConvexShape> hull;
             /** An obstacle's convex shape shrunk by SUPPORT_SINK: what an object that rests on it at
                 one end of a motion may not meet (unless it is no convex solid). */
             std::optional<ConvexShape> supportCore;
+        };
+        /** What a pair's distance was measured between. */
+        enum class Measure
+        {
+            Boxes,   ///< their bounding boxes (convex)
+            Convex,  ///< their convex shapes or a mesh's hull (convex)
+            Mesh     ///< a mesh's triangles (not convex: no secant bound)
+        };
+        /** A pair's distance and what it measured. */
+        struct Measured
+        {
+            double distance;  ///< a lower bound, DISTANCE_ERROR below it at most; <= 0 when touching
+            Measure measure;  ///< what it was measured between
         };
         /** Two bodies that may meet along a motion, and how fast their distance may shrink. */
         struct SweptPair
         {
             const Body *a;
             const Body *b;
-            double rate;                ///< bound on the distance change over the whole motion
-            bool translates;            ///< both only translate (their sweeps have no spread)
-            double lastFraction{-1.0};  ///< where the pair's distance was last measured, or -1
-            double lastDistance{0.0};   ///< that distance
-            bool lastExact{false};      ///< of the shapes (true) or of their bounding boxes
-            bool againstCore{false};    ///< b is measured by its supportCore
+            double rate;                          ///< bound on the distance change over the whole motion
+            bool translates;                      ///< both only translate (their sweeps have no spread)
+            double lastFraction{-1.0};            ///< where the pair's distance was last measured, or -1
+            double lastDistance{0.0};             ///< that distance
+            Measure lastMeasure{Measure::Boxes};  ///< what lastDistance measured
+            bool againstCore{false};              ///< b is measured by its supportCore
         };
-        /** The distance of the bodies of a pair, placed (a lower bound, DISTANCE_ERROR below it at
-            most); zero or less when they touch. */
-        static double distance(const SweptPair &pair);
+        /** The distance of the bodies of a pair, placed: of their convex shapes; of a mesh's hull
+            while that is at least HULL_TRUSTED away; else of the triangles. */
+        static Measured distance(const SweptPair &pair);
+        /** True when two placed bodies overlap: their boxes, then their hulls, then their shapes. */
+        static bool bodiesCollide(const Body &a, const Body &b);
+        /** A hull distance from which on a mesh pair is measured by the hulls, metres: below it the
+            triangles decide, so contacts and near misses are the triangles' own. */
+        static constexpr double HULL_TRUSTED = 2.0 * SAFE_CLEARANCE;
         /** The object of a pair in contact that SweepCheck::blockingObject names, or -1. */
         int blockingObject(const SweptPair &pair) const;
 

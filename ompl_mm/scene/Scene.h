@@ -156,10 +156,12 @@ namespace ompl_mm
         std::string urdfFile;                                       ///< absolute path of the URDF file
         Eigen::Isometry3d basePose{Eigen::Isometry3d::Identity()};  ///< URDF root frame in the world
         std::string toolLink;                                       ///< link whose origin is the tool point
-        Eigen::Vector3d toolOffset{Eigen::Vector3d::Zero()};        ///< tool point in the tool link frame
-        std::vector<AllowedCollision> allowedCollisions;            ///< link pairs never checked
-        std::vector<ToolFrame> tools;                               ///< named frames for inverse kinematics
-        std::vector<FixedJointValue> fixedJoints;                   ///< joints held still, in file order
+        /** The tool frame in the tool link's frame: the tool point at its origin, its z the approach
+            axis, its x the axis between the fingers (see docs/scene-format.md, "The tool frame"). */
+        Eigen::Isometry3d toolOffset{Eigen::Isometry3d::Identity()};
+        std::vector<AllowedCollision> allowedCollisions;  ///< link pairs never checked
+        std::vector<ToolFrame> tools;                     ///< named frames for inverse kinematics
+        std::vector<FixedJointValue> fixedJoints;         ///< joints held still, in file order
         std::string srdfFile;  ///< absolute path of the robot's SRDF file (MoveIt's format); empty: none
         std::string
             group;  ///< the SRDF's planning group: its joints are planned, the others held; empty: all

@@ -9,41 +9,18 @@
 #include "ompl_mm/scene/ConvexHull.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 
 namespace ompl_mm
 {
     namespace
     {
-        /** What the broad-phase callback needs: the obstacle a body may touch, and the result. */
-        struct ObstacleQuery
-        {
-            const fcl::CollisionObjectd *allowed{nullptr};
-            const fcl::CollisionObjectd *hit{nullptr};
-        };
-
         bool narrowPhase(const fcl::CollisionObjectd &a, const fcl::CollisionObjectd &b)
         {
-            if (!a.getAABB().overlap(b.getAABB()))
-                return false;
             fcl::CollisionRequestd request;
             fcl::CollisionResultd result;
             return fcl::collide(&a, &b, request, result) > 0;
-        }
-
-        bool obstacleCallback(fcl::CollisionObjectd *o1, fcl::CollisionObjectd *o2, void *data)
-        {
-            auto *query = static_cast<ObstacleQuery *>(data);
-            // the manager passes the query body and a tree body in either order
-            const fcl::CollisionObjectd *obstacle = o1->getUserData() ? o1 : o2;
-            if (obstacle == query->allowed)
-                return false;
-            if (narrowPhase(*o1, *o2))
-            {
-                query->hit = obstacle;
-                return true;
-            }
-            return false;
         }
 
         void place(fcl::CollisionObjectd &object, const Eigen::Isometry3d &frame)
@@ -117,10 +94,19 @@ namespace ompl_mm
                         scene.robot.where,
                         label + ": " + e.what() + " (meshes=\"exact\" takes its triangles)");
                 }
-                robotBodies_.push_back({std::make_unique<fcl::CollisionObjectd>(geometry), s.origin,
-                                        static_cast<int>(l), label, isGripperLink(static_cast<int>(l)),
-                                        s.shape.boundingRadius(),
-                                        ConvexShape::of(s.shape, scene.robot.meshCollision), std::nullopt});
+                robotBodies_.push_back(
+                    {std::make_unique<fcl::CollisionObjectd>(geometry), s.origin, static_cast<int>(l), label,
+                     isGripperLink(static_cast<int>(l)), s.shape.boundingRadius(),
+                     ConvexShape::of(s.shape, scene.robot.meshCollision), std::nullopt, std::nullopt});
+                if (!robotBodies_.back().convex && s.shape.kind == Shape::Kind::Mesh)
+                    try
+                    {
+                        robotBodies_.back().hull = ConvexShape::of(s.shape, MeshCollision::ConvexHull);
+                    }
+                    catch (const ompl::Exception &)
+                    {
+                        // a flat mesh has no hull: its triangles answer every query
+                    }
             }
 
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
@@ -128,10 +114,10 @@ namespace ompl_mm
             const Shape &shape = scene.objects[i].shape;
             Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
             offset.translation().z() = 0.5 * shape.height();  // the object frame is at its base
-            objectBodies_.push_back({std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(shape)),
-                                     offset, static_cast<int>(i), "object '" + scene.objects[i].name + "'",
-                                     false, shape.boundingRadius(),
-                                     ConvexShape::of(shape, MeshCollision::Exact), std::nullopt});
+            objectBodies_.push_back(
+                {std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(shape)), offset,
+                 static_cast<int>(i), "object '" + scene.objects[i].name + "'", false, shape.boundingRadius(),
+                 ConvexShape::of(shape, MeshCollision::Exact), std::nullopt, std::nullopt});
         }
 
         obstacleTree_ = std::make_unique<fcl::DynamicAABBTreeCollisionManagerd>();
@@ -145,11 +131,12 @@ namespace ompl_mm
                 false,
                 scene.obstacles[i].shape.boundingRadius(),
                 ConvexShape::of(scene.obstacles[i].shape, MeshCollision::Exact),
+                std::nullopt,
                 std::nullopt};
             if (body.convex)
                 body.supportCore = body.convex->shrunk(SUPPORT_SINK);
             place(*body.object, scene.obstacles[i].pose);
-            body.object->setUserData(&obstacleBodies_);  // non-null marks tree members
+            body.object->setUserData(reinterpret_cast<void *>(i + 1));  // the obstacle's index + 1
             obstacleTree_->registerObject(body.object.get());
             obstacleBodies_.push_back(std::move(body));
         }
@@ -217,8 +204,8 @@ namespace ompl_mm
                 place(*body.object, linkFrames_[body.owner] * body.offset);
             std::vector<bool> touching(selfPairs_.size());
             for (std::size_t p = 0; p < selfPairs_.size(); ++p)
-                touching[p] = narrowPhase(*robotBodies_[selfPairs_[p].first].object,
-                                          *robotBodies_[selfPairs_[p].second].object);
+                touching[p] =
+                    bodiesCollide(robotBodies_[selfPairs_[p].first], robotBodies_[selfPairs_[p].second]);
             return touching;
         };
         const std::vector<bool> atZero = touchingPairs(std::vector<double>(robot.dof(), 0.0));
@@ -248,19 +235,44 @@ namespace ompl_mm
 
     CollisionWorld::~CollisionWorld() = default;
 
-    double CollisionWorld::distance(const SweptPair &pair)
+    CollisionWorld::Measured CollisionWorld::distance(const SweptPair &pair)
     {
         const Body &a = *pair.a, &b = *pair.b;
         const std::optional<ConvexShape> &shapeB = pair.againstCore ? b.supportCore : b.convex;
-        // convex solids by our GJK, whose lower bound is what conservative advancement needs; FCL
-        // for triangle meshes
+        // convex solids by our GJK, whose lower bound is what conservative advancement needs
         if (a.convex && shapeB)
-            return convexDistance(*a.convex, a.object->getTransform(), *shapeB, b.object->getTransform(),
-                                  DISTANCE_ERROR);
+            return {convexDistance(*a.convex, a.object->getTransform(), *shapeB, b.object->getTransform(),
+                                   DISTANCE_ERROR),
+                    Measure::Convex};
+        // a mesh by its hull while that is far: the hull holds the mesh, so its distance is a lower
+        // bound of the triangles'
+        const std::optional<ConvexShape> &boundA = a.convex ? a.convex : a.hull;
+        const std::optional<ConvexShape> &boundB = shapeB ? shapeB : b.hull;
+        if (boundA && boundB && !pair.againstCore)
+        {
+            const double hulls = convexDistance(*boundA, a.object->getTransform(), *boundB,
+                                                b.object->getTransform(), DISTANCE_ERROR);
+            if (hulls >= HULL_TRUSTED)
+                return {hulls, Measure::Convex};
+        }
         fcl::DistanceRequestd request;
         fcl::DistanceResultd result;
         fcl::distance(a.object.get(), b.object.get(), request, result);
-        return result.min_distance;
+        return {result.min_distance, Measure::Mesh};
+    }
+
+    bool CollisionWorld::bodiesCollide(const Body &a, const Body &b)
+    {
+        if (!a.object->getAABB().overlap(b.object->getAABB()))
+            return false;
+        // hulls apart: the meshes they hold are apart
+        const std::optional<ConvexShape> &boundA = a.convex ? a.convex : a.hull;
+        const std::optional<ConvexShape> &boundB = b.convex ? b.convex : b.hull;
+        if ((a.hull || b.hull) && boundA && boundB &&
+            convexDistance(*boundA, a.object->getTransform(), *boundB, b.object->getTransform(),
+                           DISTANCE_ERROR) > 0.0)
+            return false;
+        return narrowPhase(*a.object, *b.object);
     }
 
     void CollisionWorld::placeBodies(const Configuration &configuration) const
@@ -279,16 +291,31 @@ namespace ompl_mm
 
     bool CollisionWorld::hitsObstacle(const Body &body, int allowedObstacle, std::string *contact) const
     {
-        ObstacleQuery query;
-        if (allowedObstacle >= 0)
-            query.allowed = obstacleBodies_[allowedObstacle].object.get();
-        obstacleTree_->collide(body.object.get(), &query, obstacleCallback);
-        if (query.hit == nullptr)
+        struct Query
+        {
+            const CollisionWorld *world;
+            const Body *body;
+            int allowed;
+            int hit{-1};
+        } query{this, &body, allowedObstacle};
+        const auto callback = [](fcl::CollisionObjectd *o1, fcl::CollisionObjectd *o2, void *data)
+        {
+            auto *q = static_cast<Query *>(data);
+            // the manager passes the query body and a tree body in either order; tree bodies carry
+            // their index + 1
+            const auto index =
+                reinterpret_cast<std::uintptr_t>(o1->getUserData() ? o1->getUserData() : o2->getUserData());
+            const int obstacle = static_cast<int>(index) - 1;
+            if (obstacle == q->allowed || !bodiesCollide(*q->body, q->world->obstacleBodies_[obstacle]))
+                return false;
+            q->hit = obstacle;
+            return true;
+        };
+        obstacleTree_->collide(body.object.get(), &query, callback);
+        if (query.hit < 0)
             return false;
         if (contact)
-            for (const Body &obstacle : obstacleBodies_)
-                if (obstacle.object.get() == query.hit)
-                    *contact = body.label + " and " + obstacle.label;
+            *contact = body.label + " and " + obstacleBodies_[query.hit].label;
         return true;
     }
 
@@ -303,7 +330,7 @@ namespace ompl_mm
                 if (!isPresent(configuration, object.owner) ||
                     (link.gripper && (*configuration.restingSurfaces)[object.owner] < 0))
                     continue;
-                if (narrowPhase(*link.object, *object.object))
+                if (bodiesCollide(link, object))
                 {
                     if (contact)
                         *contact = link.label + " and " + object.label;
@@ -312,7 +339,7 @@ namespace ompl_mm
             }
         }
         for (const auto &[a, b] : selfPairs_)
-            if (narrowPhase(*robotBodies_[a].object, *robotBodies_[b].object))
+            if (bodiesCollide(robotBodies_[a], robotBodies_[b]))
             {
                 if (contact)
                     *contact = robotBodies_[a].label + " and " + robotBodies_[b].label;
@@ -332,7 +359,7 @@ namespace ompl_mm
                 return false;
             for (std::size_t j = i + 1; j < objectBodies_.size(); ++j)
                 if (isPresent(configuration, static_cast<int>(j)) &&
-                    narrowPhase(*objectBodies_[i].object, *objectBodies_[j].object))
+                    bodiesCollide(objectBodies_[i], objectBodies_[j]))
                 {
                     if (contact)
                         *contact = objectBodies_[i].label + " and " + objectBodies_[j].label;
@@ -446,7 +473,8 @@ namespace ompl_mm
                     continue;
                 }
                 const bool exact = apart <= 2.0 * SAFE_CLEARANCE;
-                const double d = exact ? distance(pair) : apart;
+                const Measured measured = exact ? distance(pair) : Measured{apart, Measure::Boxes};
+                const double d = measured.distance;
                 if (d < MIN_CLEARANCE)
                     return {false, safe, blockingObject(pair)};
                 clear = clear && d >= SAFE_CLEARANCE;
@@ -457,7 +485,8 @@ namespace ompl_mm
                 // boxes) is convex along the motion, so the line through its last two measures,
                 // allowing for their error, bounds it from below from here on
                 double closing = pair.rate;
-                if (pair.translates && pair.lastFraction >= 0.0 && pair.lastExact == exact)
+                if (pair.translates && pair.lastFraction >= 0.0 && pair.lastMeasure == measured.measure &&
+                    measured.measure != Measure::Mesh)
                     closing = std::min(
                         closing, (pair.lastDistance - d + 2.0 * DISTANCE_ERROR) / (t - pair.lastFraction));
                 if (closing <= 0.0)
@@ -469,7 +498,7 @@ namespace ompl_mm
                 step = std::min(step, (d - DISTANCE_ERROR - keep) / closing);
                 pair.lastFraction = t;
                 pair.lastDistance = d;
-                pair.lastExact = exact;
+                pair.lastMeasure = measured.measure;
                 ++k;
             }
             if (clear)

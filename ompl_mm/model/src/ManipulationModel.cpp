@@ -17,8 +17,7 @@ namespace ompl_mm
         }
         try
         {
-            toolPointChain_.emplace(robot_, toolLink_,
-                                    Eigen::Isometry3d(Eigen::Translation3d(scene_.robot.toolOffset)));
+            toolPointChain_.emplace(robot_, toolLink_, scene_.robot.toolOffset);
         }
         catch (const ompl::Exception &e)
         {
@@ -52,8 +51,6 @@ namespace ompl_mm
 
     Eigen::Isometry3d ManipulationModel::toolFrame(const double *q) const
     {
-        Eigen::Isometry3d frame = robot_.linkFrame(q, scene_.robot.basePose, toolLink_);
-        frame.translation() = frame * scene_.robot.toolOffset;
-        return frame;
+        return robot_.linkFrame(q, scene_.robot.basePose, toolLink_) * scene_.robot.toolOffset;
     }
 }  // namespace ompl_mm

@@ -184,8 +184,7 @@ namespace ompl_mm
                     robot.basePose = ompl_core::readOrigin(child);
                 else
                 {
-                    ompl_core::checkLeaf(child, {"xyz"});
-                    robot.toolOffset = child.vector3("xyz");
+                    robot.toolOffset = ompl_core::readOrigin(child);
                 }
             }
         }

@@ -31,7 +31,7 @@ TEST(PlanarBase, FindsTheJointsUnderATurnedAndShiftedBase)
     Scene scene = mobileBlockedScene();
     scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/robots/mobile_base_xy.urdf";
     scene.robot.toolLink = "body";
-    scene.robot.toolOffset = Eigen::Vector3d(0.2, 0.0, 0.1);
+    scene.robot.toolOffset = Eigen::Isometry3d(Eigen::Translation3d(0.2, 0.0, 0.1));
     scene.robot.basePose.translation() = Eigen::Vector3d(3.0, -1.0, 0.0);
     const ManipulationModelPtr model = makeModel(scene);
     const PlanarBase base(*model);
@@ -60,7 +60,7 @@ TEST(PlanarBase, FootprintRadiusHoldsEveryShapeAboutTheTool)
     Scene boxed = scene;
     boxed.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/robots/mobile_base_xy.urdf";
     boxed.robot.toolLink = "body";
-    boxed.robot.toolOffset = Eigen::Vector3d(0.2, 0.0, 0.1);
+    boxed.robot.toolOffset = Eigen::Isometry3d(Eigen::Translation3d(0.2, 0.0, 0.1));
     EXPECT_DOUBLE_EQ(PlanarBase(*makeModel(boxed)).footprintRadius(boxed.robotStart.data()),
                      0.2 + 0.5 * std::sqrt(0.4 * 0.4 + 0.3 * 0.3 + 0.2 * 0.2));
 }

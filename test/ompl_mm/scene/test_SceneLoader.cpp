@@ -606,3 +606,19 @@ TEST(SceneLoader, SrdfErrors)
                 "<robot> in <start> needs either joints=\"...\" or state=\"NAME\"");
     expectError(replaced(7, R"(    <robot/>)"), 7, "<robot> in <start> needs either");
 }
+
+TEST(SceneLoader, ToolOffsetTakesARotation)
+{
+    const Scene scene = parseLines(replaced(
+        2,
+        R"(  <robot urdf="robots/mobile_disc.urdf" tool_link="body"><tool_offset xyz="0 0 0.1" rpy="0 0 90deg"/></robot>)"));
+    EXPECT_LT((scene.robot.toolOffset.translation() - Eigen::Vector3d(0, 0, 0.1)).norm(), 1e-15);
+    EXPECT_LT((scene.robot.toolOffset.linear() * Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitY()).norm(),
+              1e-12)
+        << "the tool's x turned onto the link's y";
+    expectError(
+        replaced(
+            2,
+            R"(  <robot urdf="robots/mobile_disc.urdf" tool_link="body"><tool_offset xyz="0 0 0.1" rpy="0 0"/></robot>)"),
+        2, "rpy");
+}

@@ -369,6 +369,21 @@ TEST(ManipulationSetupInput, AToolFrameOnAnUnknownLinkIsNamedAtItsLine)
               "s.xml:14: tool frame 'grasp' names link 'hand', which robot 'mobile_disc' does not have");
 }
 
+TEST(ManipulationSetup, TheToolFrameIsTheToolLinksFrameTimesTheToolOffset)
+{
+    // a tool offset with a turn: the tool point's frame turns with it, and so does its chain
+    Scene scene = mobileBlockedScene();
+    scene.robot.toolOffset =
+        Eigen::Translation3d(0, 0, 0.2) * Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitY());
+    ManipulationSetup setup(scene);
+    const ManipulationModel &model = *setup.manipulationSpace()->model();
+    const std::vector<double> q{0.7, -1.1};
+    const Eigen::Isometry3d expected =
+        model.robot().linkFrame(q.data(), scene.robot.basePose, model.toolLink()) * scene.robot.toolOffset;
+    EXPECT_TRUE(model.toolFrame(q.data()).isApprox(expected, 1e-12));
+    EXPECT_TRUE(model.toolPointChain().toolPose(q.data(), scene.robot.basePose).isApprox(expected, 1e-12));
+}
+
 TEST(ManipulationSetup, ToolFramesGiveTheirChains)
 {
     // a frame 0.1 m above the body, turned about z: its chain's pose is the link's frame times it
