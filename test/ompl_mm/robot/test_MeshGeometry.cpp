@@ -2,7 +2,8 @@
 // are read through assimp, scaled (COLLADA z up, in its unit), found relative to the URDF, through
 // OMPL_MM_PACKAGE_PATH and the URDF's ancestors (package://), read once per file; bad meshes are
 // errors at the URDF's line; MOBILE BLOCKED with a mesh robot collides where the mesh is and is
-// solved; the scene's meshes="convex_hull" fills a concave link's notch, exact meshes leave it free.
+// solved; the scene's meshes="convex_hull" fills a concave link's notch, exact meshes leave it free, and
+// their answers (checked through their hulls first) are the triangles' own.
 #include "ompl_mm/robot/RobotModel.h"
 
 #include "common/InputErrors.h"
@@ -19,9 +20,11 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -480,4 +483,73 @@ TEST_F(MeshGeometry, MalformedColladaIsAnErrorAtTheLinksLineNamingTheFile)
         EXPECT_TRUE(ompl_core::test::startsWith(error, prefix)) << error;
         EXPECT_GT(error.size(), prefix.size()) << "with assimp's reason";
     }
+}
+
+TEST_F(MeshGeometry, ExactMeshAnswersAreTheTrianglesOwnAroundTheNotch)
+{
+    // the checks go through the L's hull first; their answers must be those of the triangles
+    // themselves, which FCL gives here directly
+    writeLPrismStl(dir_ / "robots" / "meshes" / "l.stl");
+    writeUrdf(dir_, mobileUrdf(collision("meshes/l.stl", "0.12 0.12 0.12")));
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    ManipulationSetup setup(loadScene(pegScene(dir_, "").string()));
+    RobotProbe probe(setup);
+    const RobotModel &robot = setup.manipulationSpace()->model()->robot();
+    const TriangleMesh &mesh = *robot.links()[robot.linkIndex("body")].shapes[0].shape.mesh;
+    auto triangles = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+    std::vector<fcl::Triangle> faces;
+    for (const std::array<int, 3> &t : mesh.triangles)
+        faces.emplace_back(t[0], t[1], t[2]);
+    triangles->beginModel();
+    triangles->addSubModel(mesh.vertices, faces);
+    triangles->endModel();
+    fcl::CollisionObjectd body(triangles);
+    fcl::CollisionObjectd peg(std::make_shared<fcl::Boxd>(0.02, 0.02, 0.02));
+    peg.setTranslation(Eigen::Vector3d(0.54, 1.54, 0.25));
+    peg.computeAABB();
+    const auto trianglesFree = [&](double x, double y)
+    {
+        body.setTranslation(Eigen::Vector3d(x, y, 0.25));
+        body.computeAABB();
+        fcl::CollisionRequestd request;
+        fcl::CollisionResultd result;
+        return fcl::collide(&body, &peg, request, result) == 0;
+    };
+    int free = 0, blocked = 0;
+    for (int i = 0; i <= 20; ++i)
+        for (int j = 0; j <= 20; ++j)
+        {
+            const double x = 0.38 + 0.016 * i, y = 1.38 + 0.016 * j;
+            const bool expected = trianglesFree(x, y);
+            ASSERT_EQ(probe.valid(x, y), expected) << x << " " << y;
+            (expected ? free : blocked) += 1;
+        }
+    EXPECT_GT(free, 50);
+    EXPECT_GT(blocked, 50);
+    // motions: one it accepts is free at every millimetre; one it refuses meets the peg
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> around(0.38, 0.70);
+    int accepted = 0, refused = 0;
+    for (int trial = 0; trial < 200; ++trial)
+    {
+        const double x1 = around(rng), y1 = around(rng) + 1.0, x2 = around(rng), y2 = around(rng) + 1.0;
+        if (!trianglesFree(x1, y1) || !trianglesFree(x2, y2))
+            continue;
+        const int samples = 1 + static_cast<int>(1000.0 * std::hypot(x2 - x1, y2 - y1));
+        bool alongFree = true;
+        for (int k = 0; k <= samples; ++k)
+        {
+            const double t = static_cast<double>(k) / samples;
+            alongFree = alongFree && trianglesFree(x1 + t * (x2 - x1), y1 + t * (y2 - y1));
+        }
+        const bool motion = probe.motionValid(x1, y1, x2, y2);
+        if (motion)
+            EXPECT_TRUE(alongFree) << x1 << " " << y1 << " -> " << x2 << " " << y2;
+        else if (alongFree)
+            ADD_FAILURE() << "refused a free motion " << x1 << " " << y1 << " -> " << x2 << " " << y2
+                          << " (it may only graze the peg by micrometres)";
+        (motion ? accepted : refused) += 1;
+    }
+    EXPECT_GT(accepted, 20);
+    EXPECT_GT(refused, 20);
 }
