@@ -56,5 +56,7 @@ namespace ompl_mm
         Eigen::Vector3d halfSize_{Eigen::Vector3d::Zero()};  ///< box half edges; cylinder (r, r, half length)
         double margin_{0.0};
         std::shared_ptr<const std::vector<Eigen::Vector3d>> corners_;
+        /** A mesh hull's polytope: its vertex graph, walked uphill by support(); null otherwise. */
+        std::shared_ptr<const ConvexHull> hull_;
     };
 }  // namespace ompl_mm

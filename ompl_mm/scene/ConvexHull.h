@@ -15,6 +15,12 @@ namespace ompl_mm
     {
         std::vector<Eigen::Vector3d> vertices;      ///< corners: input points, each used by a face
         std::vector<std::array<int, 3>> triangles;  ///< faces: indices into vertices, outward
+        /** The vertices joined to vertex v by an edge are neighbours[neighbourStart[v]] up to
+            neighbours[neighbourStart[v + 1]]: walking them uphill finds the vertex farthest along a
+            direction without looking at every vertex. */
+        std::vector<int> neighbourStart;
+        std::vector<int> neighbours;    ///< see neighbourStart
+        std::array<int, 6> extremes{};  ///< the vertices farthest along +x, -x, +y, -y, +z, -z
 
         /** Points closer to a face's plane than this many times the point set's size (the sum of
             its largest absolute coordinates) count as on the plane: the hull leaves them out, so

@@ -1,6 +1,7 @@
 #include "ompl_mm/collision/ConvexShape.h"
 
 #include "ompl_mm/scene/ConvexHull.h"
+#include "ompl_mm/scene/ConvexHull.h"
 #include "ompl_mm/scene/TriangleMesh.h"
 
 #include <cmath>
@@ -50,7 +51,9 @@ namespace ompl_mm
                 {
                     // the corners stay with the mesh's hull, shared
                     const std::shared_ptr<const ConvexHull> hull = shape.mesh->convexHull();
-                    return polytope({hull, &hull->vertices});
+                    ConvexShape polytope = ConvexShape::polytope({hull, &hull->vertices});
+                    polytope.hull_ = hull;
+                    return polytope;
                 }
                 return std::nullopt;
         }
@@ -98,6 +101,31 @@ namespace ompl_mm
             case Kind::Polytope:
             {
                 const std::vector<Eigen::Vector3d> &corners = *corners_;
+                if (hull_)
+                {
+                    // uphill along the hull's edges from the best axis extreme: a vertex no neighbour
+                    // of which lies farther is the farthest of a convex polytope
+                    int best = hull_->extremes[0];
+                    for (const int extreme : hull_->extremes)
+                        if (corners[extreme].dot(direction) > corners[best].dot(direction))
+                            best = extreme;
+                    double farthest = corners[best].dot(direction);
+                    for (bool climbed = true; climbed;)
+                    {
+                        climbed = false;
+                        for (int k = hull_->neighbourStart[best]; k < hull_->neighbourStart[best + 1]; ++k)
+                        {
+                            const double along = corners[hull_->neighbours[k]].dot(direction);
+                            if (along > farthest)
+                            {
+                                farthest = along;
+                                best = hull_->neighbours[k];
+                                climbed = true;
+                            }
+                        }
+                    }
+                    return corners[best];
+                }
                 std::size_t best = 0;
                 double farthest = corners[0].dot(direction);
                 for (std::size_t i = 1; i < corners.size(); ++i)

@@ -17,6 +17,31 @@ namespace ompl_mm
 {
     namespace
     {
+        /** Fills the hull's vertex adjacency (each edge of a closed triangulation lies on two faces;
+            each face lists it once in each direction) and its axis extremes. */
+        void linkVertices(ConvexHull &hull)
+        {
+            std::vector<std::vector<int>> adjacent(hull.vertices.size());
+            for (const std::array<int, 3> &t : hull.triangles)
+                for (int i = 0; i < 3; ++i)
+                    adjacent[t[i]].push_back(
+                        t[(i + 1) % 3]);  // the other direction comes with the other face
+            hull.neighbourStart.assign(1, 0);
+            for (const std::vector<int> &list : adjacent)
+            {
+                hull.neighbours.insert(hull.neighbours.end(), list.begin(), list.end());
+                hull.neighbourStart.push_back(static_cast<int>(hull.neighbours.size()));
+            }
+            for (int axis = 0; axis < 3; ++axis)
+                for (int v = 0; v < static_cast<int>(hull.vertices.size()); ++v)
+                {
+                    if (hull.vertices[v][axis] > hull.vertices[hull.extremes[2 * axis]][axis])
+                        hull.extremes[2 * axis] = v;
+                    if (hull.vertices[v][axis] < hull.vertices[hull.extremes[2 * axis + 1]][axis])
+                        hull.extremes[2 * axis + 1] = v;
+                }
+        }
+
         const char *const WHO = "convex hull";
 
         /** A triangle of the hull being built, with the points outside it. */
@@ -169,6 +194,7 @@ namespace ompl_mm
                     across(static_cast<int>(entry.first >> 32), static_cast<int>(entry.first & 0xffffffffu));
                 if (hull.triangles.size() != 2 * hull.vertices.size() - 4)
                     throw ompl::Exception(WHO, "rounding broke the hull: it is not a sphere");
+                linkVertices(hull);
                 return hull;
             }
 

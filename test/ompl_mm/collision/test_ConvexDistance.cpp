@@ -6,6 +6,7 @@
 #include <fcl/fcl.h>
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 using namespace ompl_mm;
@@ -202,4 +203,36 @@ TEST(ConvexShape, ofTakesPrimitivesAndHullsButNotTriangles)
     const std::optional<ConvexShape> hull = ConvexShape::of(mesh, MeshCollision::ConvexHull);
     ASSERT_TRUE(hull);
     EXPECT_TRUE(hull->support({1, 0.1, 0.1}).isApprox(Eigen::Vector3d(1, 0, 0)));
+}
+
+TEST(ConvexShape, AHullsSupportWalkedUphillIsTheFarthestOfAllItsCorners)
+{
+    // 2000 points on and inside an ellipsoid: a hull of hundreds of corners, searched by its edges
+    std::mt19937 rng(11);
+    std::normal_distribution<double> normal;
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    auto cloud = std::make_shared<TriangleMesh>();
+    for (int i = 0; i < 2000; ++i)
+    {
+        const Eigen::Vector3d p = Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+        cloud->vertices.push_back((i % 2 ? 1.0 : unit(rng)) *
+                                  Eigen::Vector3d(0.3 * p.x(), 0.1 * p.y(), 0.05 * p.z()));
+    }
+    cloud->triangles = {{0, 1, 2}};
+    cloud->measure();
+    Shape mesh;
+    mesh.kind = Shape::Kind::Mesh;
+    mesh.mesh = cloud;
+    const std::optional<ConvexShape> hull = ConvexShape::of(mesh, MeshCollision::ConvexHull);
+    ASSERT_TRUE(hull);
+    const std::vector<Eigen::Vector3d> &corners = cloud->convexHull()->vertices;
+    ASSERT_GT(corners.size(), 200u);
+    for (int trial = 0; trial < 2000; ++trial)
+    {
+        const Eigen::Vector3d direction(normal(rng), normal(rng), normal(rng));
+        double farthest = -std::numeric_limits<double>::infinity();
+        for (const Eigen::Vector3d &corner : corners)
+            farthest = std::max(farthest, corner.dot(direction));
+        ASSERT_NEAR(hull->support(direction).dot(direction), farthest, 1e-15) << trial;
+    }
 }
