@@ -2,6 +2,7 @@
 // Exit codes: 0 solved, 1 not solved, 2 bad input.
 #include "common/AppSupport.h"
 #include "common/KeepUntilExit.h"
+#include "common/PhaseTimes.h"
 #include "common/RunTermination.h"
 #include "ompl_core/io/OutputFile.h"
 #include "ompl_core/run/GlobalSeed.h"
@@ -19,6 +20,8 @@
 
 #include <iomanip>
 #include <iostream>
+#include <optional>
+#include <sstream>
 
 namespace po = boost::program_options;
 
@@ -74,11 +77,17 @@ namespace
                   << " collision queries; time in nearest neighbour " << stats.nearestTime * share
                   << " %, propagate " << stats.propagateTime * share << " %, connect "
                   << stats.connectTime * share << " %\n";
+        // what kept the primitives from acting, when nothing solved
+        std::istringstream never(solved ? std::string() : setup.mopl()->primitiveTally().failureSummary());
+        for (std::string line; std::getline(never, line);)
+            std::cout << "  never succeeded: " << line << "\n";
     }
 
     int run(const Options &options)
     {
+        apps::PhaseTimes phases;
         const ompl_mm::Scene scene = ompl_mm::loadScene(options.common.scene);
+        phases.load = phases.lap();
         ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         ompl_mm::ManipulationSetup &setup =
             apps::keepUntilExit(std::make_unique<ompl_mm::ManipulationSetup>(scene));
@@ -101,19 +110,17 @@ namespace
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
         setup.setup();
         ompl_core::reseedOmpl(static_cast<std::uint32_t>(options.common.seed));  // as the benchmark tool does
+        phases.setup = phases.lap();
         setup.solve(apps::runTermination(timeLimit));
-        const bool solved = setup.getProblemDefinition()->hasExactSolution();
-        if (solved && !setup.manipulationPath().check())
-            OMPL_ERROR("ompl_mm_plan: the solution failed OMPL's path re-check");
+        phases.solve = phases.lap();
 
+        // the checks: one re-check of the path (the JSON reports the same), the summary, the files;
+        // the JSON last, so that its "checks" phase holds all of them but its own writing
+        const bool solved = setup.getProblemDefinition()->hasExactSolution();
+        const bool pathValid = solved && setup.manipulationPath().check();
+        if (solved && !pathValid)
+            OMPL_ERROR("ompl_mm_plan: the solution failed OMPL's path re-check");
         printSummary(scene, setup, options);
-        if (json.isOpen())
-        {
-            ompl_core::writeRunJson(
-                json.stream(),
-                ompl_mm::manipulationRunResult(options.common.describe(scene.name, timeLimit), setup));
-            json.commit();
-        }
         if (svg.isOpen())
         {
             ompl_mm::writeSceneSvg(svg.stream(), setup, solved ? &setup.manipulationPath() : nullptr);
@@ -132,6 +139,19 @@ namespace
                 ompl_mm::writePathFile(path.stream(), setup.manipulationPath());
             path.commit();
         }
+        if (json.isOpen())
+        {
+            ompl_core::RunResult result =
+                ompl_mm::manipulationRunResult(options.common.describe(scene.name, timeLimit), setup,
+                                               solved ? std::optional<bool>(pathValid) : std::nullopt);
+            phases.checks = phases.sinceLap();
+            result.details.addRecord("phases_s", phases.record());
+            ompl_core::writeRunJson(json.stream(), result);
+            json.commit();
+        }
+        phases.checks = phases.lap();
+        if (options.common.verbose)
+            phases.print(std::cout);
         return solved ? 0 : 1;
     }
 }  // namespace

@@ -3,6 +3,7 @@
 // Exit codes: 0 solved, 1 not solved, 2 bad input.
 #include "common/AppSupport.h"
 #include "common/KeepUntilExit.h"
+#include "common/PhaseTimes.h"
 #include "common/RunTermination.h"
 #include "ompl_core/io/OutputFile.h"
 #include "ompl_core/run/GlobalSeed.h"
@@ -78,7 +79,9 @@ namespace
 
     int run(const Options &options)
     {
+        apps::PhaseTimes phases;
         const ompl_phys::PhysicsScene scene = ompl_phys::loadPhysicsScene(options.common.scene);
+        phases.load = phases.lap();
         ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         ompl_phys::PhysicsSetup &setup =
             apps::keepUntilExit(std::make_unique<ompl_phys::PhysicsSetup>(scene));
@@ -98,7 +101,12 @@ namespace
         const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
         setup.setup();
         ompl_core::reseedOmpl(static_cast<std::uint32_t>(options.common.seed));  // as the benchmark tool does
+        phases.setup = phases.lap();
         setup.solve(apps::runTermination(timeLimit));
+        phases.solve = phases.lap();
+
+        // the checks: the re-simulation of the solution, the summary, the files; the JSON last, so
+        // that its "checks" phase holds all of them but its own writing
         const bool solved = setup.haveExactSolution();
         std::optional<ompl_phys::SimulatedPath> simulated;
         if (solved)
@@ -110,13 +118,6 @@ namespace
         }
         const ompl_phys::SimulatedPath *result = simulated ? &*simulated : nullptr;
         printSummary(setup, options, result);
-        if (json.isOpen())
-        {
-            ompl_core::writeRunJson(
-                json.stream(),
-                ompl_phys::physicsRunResult(options.common.describe(scene.name, timeLimit), setup, result));
-            json.commit();
-        }
         if (svg.isOpen())
         {
             ompl_phys::writePhysicsSceneSvg(svg.stream(), setup, result,
@@ -137,6 +138,18 @@ namespace
                 ompl_phys::writeSimulatedPathFile(path.stream(), setup, *result);
             path.commit();
         }
+        if (json.isOpen())
+        {
+            ompl_core::RunResult record =
+                ompl_phys::physicsRunResult(options.common.describe(scene.name, timeLimit), setup, result);
+            phases.checks = phases.sinceLap();
+            record.details.addRecord("phases_s", phases.record());
+            ompl_core::writeRunJson(json.stream(), record);
+            json.commit();
+        }
+        phases.checks = phases.lap();
+        if (options.common.verbose)
+            phases.print(std::cout);
         return solved ? 0 : 1;
     }
 }  // namespace

@@ -5,12 +5,22 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
 
 namespace ompl_core
 {
+    /** Triangles that several solids may share (a robot's link mesh, drawn on the link and again in
+        its goal pose; one mesh file used by two links): the page holds each once, its corners
+        rounded to 0.1 mm. */
+    struct ViewerMesh
+    {
+        std::vector<Eigen::Vector3d> vertices;      ///< corners, m
+        std::vector<std::array<int, 3>> triangles;  ///< faces: indices of vertices
+    };
+
     /** A solid of the viewer, posed in its body's frame. */
     struct ViewerSolid
     {
@@ -20,7 +30,7 @@ namespace ompl_core
             Box,       ///< size: edge lengths
             Cylinder,  ///< radius, length along z
             Sphere,    ///< radius
-            Mesh,      ///< vertices and triangles
+            Mesh,      ///< mesh when set, else vertices and triangles
         };
         Kind kind{Kind::Box};                                   ///< which solid
         Eigen::Vector3d size{Eigen::Vector3d::Zero()};          ///< box edge lengths, m
@@ -29,9 +39,14 @@ namespace ompl_core
         std::vector<Eigen::Vector3d> vertices;                  ///< mesh corners, m
         std::vector<std::array<int, 3>> triangles;              ///< mesh faces: indices of vertices
         Eigen::Isometry3d pose{Eigen::Isometry3d::Identity()};  ///< in the body's frame
+        /** Mesh: shared triangles, written once however many solids use them; when set, vertices
+            and triangles are not used. */
+        std::shared_ptr<const ViewerMesh> mesh;
+        std::string colour;  ///< fill colour (CSS, "#rrggbb") of this solid alone; empty: its body's
     };
 
-    /** Solids that move together, drawn in one colour (CSS, "#rrggbb"). */
+    /** Solids that move together, drawn in one colour (CSS, "#rrggbb") but for solids with a colour
+        of their own. */
     struct ViewerBody
     {
         std::string name;                 ///< for the legend and tooltips
@@ -78,7 +93,9 @@ namespace ompl_core
     /** Writes plan as one HTML page that opens offline in a browser: three.js and its
         OrbitControls inlined, an orbiting camera, play/pause, a timeline, speed, steps to the
         previous and next mode switch, and the current segment's label. Numbers are written to
-        0.1 mm and 1e-5 of a quaternion. @pre every frame has a pose per moving body, toolPath a
+        0.1 mm and 1e-5 of a quaternion; shared meshes (ViewerSolid::mesh) once each, their corners
+        as whole multiples of 0.1 mm. Meshes are shaded smoothly within a surface and sharply
+        where faces meet at more than 40 degrees. @pre every frame has a pose per moving body, toolPath a
         point per frame. @throws InputError as requireThreeJs(). */
     void writePlanViewerPage(std::ostream &out, const ViewerPlan &plan);
 }  // namespace ompl_core

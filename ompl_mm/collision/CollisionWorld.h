@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ompl_mm
@@ -97,6 +98,12 @@ namespace ompl_mm
             /** The movable object in the contact that stopped the motion (of two, the one the motion
                 moves less), or -1: free, or stopped by the robot itself or an obstacle alone. */
             int blockingObject{-1};
+            /** The two bodies whose contact stopped the motion ("robot link 'hand'", "object 'cyl1'"),
+                views of the world's labels; empty when free, or stopped by grazing too long. */
+            std::string_view contact[2]{};
+            /** The check was stopped (its stop callback said so) before it finished: not free, and
+                no contact to blame; safeFraction holds for the rounds it did. */
+            bool interrupted{false};
         };
 
         /** Continuous collision check of a motion from one configuration to another, under the
@@ -109,9 +116,12 @@ namespace ompl_mm
             convexDistance(); FCL's for triangle meshes) and MAX_SWEEP_ROUNDS. The joints must move linearly
             and each object slide or be carried with the tool (held at one end at least);
             configurationAt(t) returns the configuration at fraction t (its pointers stay valid
-            until the next call). @pre both configurations' pointers are set, for all bodies. */
+            until the next call). @pre both configurations' pointers are set, for all bodies. stop (optional)
+           is asked before every round after the first: when it says true the check ends, interrupted
+           (SweepCheck::interrupted), so that a planner's time limit reaches into a long check. */
         SweepCheck checkSweep(const Configuration &from, const Configuration &to,
-                              const std::function<Configuration(double)> &configurationAt) const;
+                              const std::function<Configuration(double)> &configurationAt,
+                              const std::function<bool()> &stop = {}) const;
 
         /** Random poses the automatic self-collision check tries (seeded, so every setup finds the
             same pairs). */

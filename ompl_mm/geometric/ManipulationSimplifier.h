@@ -34,8 +34,13 @@ namespace ompl_mm
         4. brings an arm's tool closer to straight lines along its transits and transfers
            (ToolPathStraightener), or, where the tool moves straight already, runs step 3 again.
         Every change is checked with the ManipulationMotionValidator, so the result is as valid as
-        the input. Deterministic for a given RNG state. Not thread-safe (it reuses its empty-space
-        planner's scratch space). */
+        the input. A termination condition (a planner's time limit) stops it between these steps
+        and within them (through a StepTermination view of it): between primitive applications
+        and inverse kinematics attempts, RRT iterations, windows and bisection probes, and,
+        through the validator (a TerminationScope for the whole run), within every motion check,
+        OMPL's steps included; what is done by then is kept, so the path stays valid.
+        Deterministic for a given RNG state, as long as it is not stopped. Not thread-safe (it
+        reuses its empty-space planner's scratch space). */
     class ManipulationSimplifier
     {
     public:
@@ -53,8 +58,8 @@ namespace ompl_mm
 
         /** Simplifies path in place with `windowAttempts` random windows, drawing from rng. goal
             (may be null: the path's end then stays where it is) tells whether a changed end
-            still solves the problem. Stops early, with a valid path, when ptc says so (a planner's
-            time limit). */
+            still solves the problem. Stops soon after ptc becomes true (a planner's time limit),
+            within a step (see the class), with the valid path simplified so far. */
         Outcome simplify(ManipulationPath &path, unsigned int windowAttempts, ompl::RNG &rng,
                          const ompl::base::Goal *goal,
                          const ompl::base::PlannerTerminationCondition &ptc =
@@ -70,8 +75,9 @@ namespace ompl_mm
         static unsigned int countRoundTrips(const ManipulationPath &path);
 
     private:
-        /** Removes one round trip if it can; true when the path changed. */
-        bool removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng) const;
+        /** Removes one round trip if it can (trying until ptc is true); true when the path changed. */
+        bool removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng,
+                             const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Ends each push run at its earliest waypoint after which the object may stay where it
             is for the rest of the way (holdObject), the run's start first (no push at all), when
             the end still satisfies goal and the tool travels no farther; returns how many runs
@@ -80,22 +86,28 @@ namespace ompl_mm
                                    const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Keeps `object` at `pose` in states first … last (the path's states elsewhere unchanged):
             its pushes become the robot's transits, and where the robot's old motion meets the
-            object it is routed around it (TransitConnector, within routeIterations). True when that
-            gives valid motions and the end still satisfies goal (the path then changed). */
+            object it is routed around it (TransitConnector, within routeIterations and until ptc is
+            true). True when that gives valid motions and the end still satisfies goal (the path
+            then changed). */
         bool holdObject(ManipulationPath &path, unsigned int object, const ObjectPose &pose,
                         std::size_t first, std::size_t last, const ompl::base::Goal *goal,
-                        unsigned int routeIterations, ompl::RNG &rng) const;
+                        unsigned int routeIterations, ompl::RNG &rng,
+                        const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Shortens path with one round of the steps of OMPL's PathSimplifier (see the class
-            comment). */
-        void shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng) const;
-        /** Replans states first … last with the empty-space planner; true when the path changed. */
-        bool replanWindow(ManipulationPath &path, std::size_t first, std::size_t last, ompl::RNG &rng) const;
+            comment); leaves it as it is when ptc becomes true before the round's copy is checked. */
+        void shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng,
+                             const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** Replans states first … last with the empty-space planner (until ptc is true); true when
+            the path changed. */
+        bool replanWindow(ManipulationPath &path, std::size_t first, std::size_t last, ompl::RNG &rng,
+                          const ompl::base::PlannerTerminationCondition &ptc) const;
         /** True when every segment of the trajectory is a valid motion. */
         bool isValid(const Trajectory &trajectory) const;
 
         ompl::base::SpaceInformationPtr si_;
         const ManipulationStateSpace *space_;
-        std::shared_ptr<const ManipulationMotionValidator> validator_;
+        /** the space information's validator (its TerminationScope bounds the motion checks) */
+        std::shared_ptr<ManipulationMotionValidator> validator_;
         mutable EmptySpacePlanner planner_;
         TransitConnector connector_;
         mutable ToolPathStraightener straightener_;

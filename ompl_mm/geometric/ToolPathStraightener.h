@@ -28,8 +28,9 @@ namespace ompl_mm
             @throws ompl::Exception otherwise. */
         explicit ToolPathStraightener(const ompl::base::SpaceInformationPtr &si);
 
-        /** Straightens path in place; stops early, the path valid, when ptc says so. Returns the
-            waypoints added. */
+        /** Straightens path in place; stops early, the path valid, when ptc says so (between
+            motions; a motion check under way stops only through the validator: see
+            ManipulationMotionValidator::TerminationScope). Returns the waypoints added. */
         unsigned int straighten(ManipulationPath &path, const ompl::base::PlannerTerminationCondition &ptc);
 
         /** Seconds spent in inverse kinematics since construction. */

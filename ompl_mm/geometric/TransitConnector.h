@@ -2,6 +2,7 @@
 
 #include "ompl_mm/primitives/Trajectory.h"
 
+#include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/util/RandomNumbers.h>
 
@@ -20,10 +21,13 @@ namespace ompl_mm
         explicit TransitConnector(ompl::base::SpaceInformationPtr si);
 
         /** Appends transit waypoints to trajectory from its last state to `to`, which must differ
-            from it in the robot's joints only, within maxIterations RRT iterations; appends
-            nothing and returns false when that fails. */
+            from it in the robot's joints only, within maxIterations RRT iterations and before ptc
+            is true; appends nothing and returns false when that fails. (Its motion checks stop at
+            ptc only through the validator: see ManipulationMotionValidator::TerminationScope.) */
         bool connect(Trajectory &trajectory, const ompl::base::State *to, unsigned int maxIterations,
-                     ompl::RNG &rng) const;
+                     ompl::RNG &rng,
+                     const ompl::base::PlannerTerminationCondition &ptc =
+                         ompl::base::plannerNonTerminatingCondition()) const;
 
         /** Longest joint-space step of one RRT extension: a tenth of the joint space's extent. */
         double range() const { return range_; }

@@ -7,6 +7,8 @@ namespace ompl_mm
 {
     /** Fixed obstacles. */
     constexpr const char *OBSTACLE_COLOUR = "#555555";
+    /** The 3-D page's floor slabs (obstacles at or under the lowest support surface). */
+    constexpr const char *FLOOR_COLOUR = "#c9c9c4";
     /** Support surfaces. */
     constexpr const char *SURFACE_COLOUR = "#e2e2e2";
     /** The robot. */

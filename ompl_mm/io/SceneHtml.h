@@ -12,12 +12,17 @@ namespace ompl_mm
         moves this many metres (or radians) per second. */
     constexpr double VIEWER_SPEED = 0.5;
 
-    /** The 3-D view of the setup's scene and, when given, its solution: obstacles, support surfaces
-        (tinted), the robot's collision shapes posed by forward kinematics, the objects, the goals
-        (translucent), and the path sampled every ViewerPlan::frameStep at VIEWER_SPEED along the
-        state space's interpolation (so a held object moves with the hand, a pushed one with the
-        tool), its tool path coloured by primitive as in the SVG. path may be null (the start only).
-        @throws ompl::Exception when the setup has no start state. */
+    /** The 3-D view of the setup's scene and, when given, its solution: obstacles (floor slabs
+        light), support surfaces (tinted), the robot posed by forward kinematics, the objects, the
+        goals (translucent), and the path sampled every ViewerPlan::frameStep at VIEWER_SPEED along
+        the state space's interpolation (so a held object moves with the hand, a pushed one with the
+        tool), its tool path coloured by primitive as in the SVG. The robot shows its URDF's visual
+        geometry in its colours (VisualModel, read here, not at planning time), or its collision
+        shapes for links without; meshes of more than MeshReduction::maxVertices vertices are
+        reduced (reduceMesh()), each mesh once for all the solids that use it. path may be null
+        (the start only).
+        @throws ompl::Exception when the setup has no start state; ompl_core::InputError as
+        VisualModel::fromUrdfFile() for a malformed visual (a missing visual mesh is a warning). */
     ompl_core::ViewerPlan manipulationViewerPlan(const ManipulationSetup &setup, const ManipulationPath *path,
                                                  const std::string &title);
 

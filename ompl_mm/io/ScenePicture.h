@@ -68,7 +68,7 @@ namespace ompl_mm::picture
         int object{-1};                       ///< the carried object of a carried object's course
     };
 
-    /** An arm at one waypoint: its link shapes' outlines. */
+    /** An arm at one waypoint: its link shapes' outlines (a mesh's: its convex hull's). */
     struct ArmPose
     {
         std::vector<Footprint> links;  ///< one outline per link shape
@@ -83,7 +83,7 @@ namespace ompl_mm::picture
         std::vector<Footprint> objectStart;      ///< the objects where they start
         std::vector<Footprint> objectEnd;        ///< where the path leaves them; empty without a path
         std::vector<GoalMarker> goals;           ///< the objects' goals
-        std::vector<ArmPose> armPoses;           ///< side view: the arm, in the path's order
+        std::vector<ArmPose> armPoses;           ///< an arm (not a mobile robot), in the path's order
         std::vector<ToolSegment> carried;        ///< side view: carried objects' centres in transfers
         std::vector<ToolSegment> segments;       ///< the tool's course, segment by segment
         std::vector<Eigen::Vector2d> waypoints;  ///< the tool at the path's waypoints
@@ -92,11 +92,15 @@ namespace ompl_mm::picture
         std::optional<Footprint> robotEnd;    ///< and where it ends
     };
 
-    /** The top view (x-y) of the setup's scene and, when given, of its solution path. */
+    /** The top view (x-y) of the setup's scene and, when given, of its solution path; a mobile
+        robot (all joints prismatic) at the start and the end, an arm as sidePicture() has it. */
     Picture topPicture(const ManipulationSetup &setup, const ManipulationPath *path);
     /** The side view (x-z, seen from -y) of the setup's scene with the arm at the start, at every
         mode switch and at the end of the path, when given. */
     Picture sidePicture(const ManipulationSetup &setup, const ManipulationPath *path);
+    /** True for an obstacle whose top is at or under the scene's lowest support surface (a floor
+        slab), which pictures draw faintly so that what stands on it shows. */
+    bool isFloorSlab(const Scene &scene, const Obstacle &obstacle);
     /** The world box holding everything a picture draws. */
     Eigen::AlignedBox2d bounds(const Picture &picture);
     /** A world box with a margin around it, at least a metre across, so a lone object is not blown

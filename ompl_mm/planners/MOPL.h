@@ -150,7 +150,15 @@ namespace ompl_mm
             or the trees connect (EXACT_SOLUTION, a ManipulationPath added to the problem
             definition) or ptc ends (TIMEOUT). Returns UNRECOGNIZED_GOAL_TYPE when the goal is not a
             ManipulationGoal and INVALID_START without a valid start state. A later call goes on
-            with the same trees. */
+            with the same trees. ptc is evaluated once per iteration, as OMPL's planners do, and
+            within the iteration's steps through a StepTermination view of it (which evaluates it
+            again only once a step has lasted a millisecond, so an iteration-counting condition
+            counts iterations): the empty-space planner between primitives and their inverse
+            kinematics attempts, the walks between pieces and within each continuous collision
+            check, and the smoothing of a solution found (which shares the time limit: it stops
+            when ptc is true, keeping the valid path smoothed so far). So the call returns within
+            milliseconds of a time limit (one distance round of a collision check, one inverse
+            kinematics solve or one nearest-neighbour search) whatever the robot's meshes. */
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         /** OMPL's hook: empties both trees and resets the statistics. */
         void clear() override;
@@ -168,6 +176,11 @@ namespace ompl_mm
         /** Where the planner spent its effort. */
         const MOPLStatistics &statistics() const { return statistics_; }
 
+        /** How its primitives fared since the last clear(): attempts, motions found, motions the
+            walks found stopped and by which contact (empty before setup()). A solve that finds no
+            solution logs the kinds that never succeeded (PrimitiveTally::failureSummary()). */
+        const PrimitiveTally &primitiveTally() const;
+
     private:
         /** Outcome of one tree extension. */
         struct Extension
@@ -183,19 +196,32 @@ namespace ompl_mm
         /** Nearest vertex of tree to sample; for the goal tree a completed goal state competes and
             is added as a root when it wins. Sets *newRoot when it added one. */
         int nearest(ManipulationTree &tree, PartialState &sample, bool *newRoot);
-        Extension extend(ManipulationTree &tree, int near, const ompl::base::State *target);
-        Extension walk(ManipulationTree &tree, int near, const Trajectory &trajectory);
+        /** Extends tree from vertex near towards target: the empty-space planner's trajectory,
+            walked with continuous checks. Both stop where they are once ptc is true. */
+        Extension extend(ManipulationTree &tree, int near, const ompl::base::State *target,
+                         const ompl::base::PlannerTerminationCondition &ptc);
+        /** Walks the trajectory away from vertex near, adding vertices, until it ends, a motion
+            collides or ptc is true (then not reached). */
+        /** The primitive kind a walk's contact on segment of trajectory counts against: the
+            segment's own, or for a transit, that of the next segment that is no transit (it
+            approaches it), or transit when none follows. */
+        static PrimitiveKind blamedKind(const Trajectory &trajectory, std::size_t segment);
+        Extension walk(ManipulationTree &tree, int near, const Trajectory &trajectory,
+                       const ompl::base::PlannerTerminationCondition &ptc);
         /** Extends tree from vertex from towards the object pushed to a random place within the
             clear radius (target: scratch space); an empty extension when no place fits. */
-        Extension clearWay(ManipulationTree &tree, int from, unsigned int object, ompl::base::State *target);
+        Extension clearWay(ManipulationTree &tree, int from, unsigned int object, ompl::base::State *target,
+                           const ompl::base::PlannerTerminationCondition &ptc);
         /** Objects the goal leaves free (clear_min_free_objects compares with it). */
         unsigned int freeObjectCount() const;
         /** After an extension from near that an object stopped: clears the object out of the way and
             extends towards target again; the extension that got farthest. */
         Extension clearAndRetry(ManipulationTree &tree, int near, const Extension &stopped,
-                                const ompl::base::State *target, ompl::base::State *scratch);
+                                const ompl::base::State *target, ompl::base::State *scratch,
+                                const ompl::base::PlannerTerminationCondition &ptc);
         double segmentLength(const ompl::base::State *a, const ompl::base::State *b) const;
-        /** Builds, smooths and records the solution through forward vertex f and goal vertex g. */
+        /** Builds, smooths (until ptc is true: the smoothing shares the planner's time limit) and
+            records the solution through forward vertex f and goal vertex g. */
         void addSolution(int f, int g, const ompl::base::PlannerTerminationCondition &ptc);
         /** Clears both trees but the start. */
         void restart();
@@ -213,7 +239,8 @@ namespace ompl_mm
         const ManipulationStateSpace *space_{nullptr};
         std::unique_ptr<ManipulationMetric> metric_;
         std::unique_ptr<EmptySpacePlanner> esp_;
-        std::unique_ptr<ManipulationMotionValidator> motions_;  ///< checks the walks' motions continuously
+        /** checks the walks' motions continuously: the space information's validator */
+        std::shared_ptr<ManipulationMotionValidator> motions_;
         std::unique_ptr<ManipulationSimplifier> simplifier_;
         std::unique_ptr<ModalSampler> sampler_;
         ModalSampler::Probabilities probabilities_;

@@ -62,6 +62,10 @@ namespace ompl_mm
             maxPushJointDistance and keeps the tool on the line. */
         bool propagate(const ompl::base::State *from, const ompl::base::State *to,
                        Trajectory &trajectory) const override;
+        /** Primitive's hook: as above, but stops searching soon after ptc becomes true (between
+            inverse kinematics solves): then false, nothing appended, unless a solution was found. */
+        bool propagate(const ompl::base::State *from, const ompl::base::State *to, Trajectory &trajectory,
+                       const ompl::base::PlannerTerminationCondition &ptc) const override;
         /** Primitive's hook: a push segment when every object rests at both ends, exactly one
             slides (x, y only, its yaw kept), and the tool keeps this primitive's push pose for it
             (within LINE_TOLERANCE and ANGLE_TOLERANCE) at both ends and at every step of the
@@ -91,10 +95,11 @@ namespace ompl_mm
             (the object pushed in direction; the rest of the world as in `from`): joints[0] at the
             push start, [1] approachDistance above it, [2] at the push end, [3] backed away from
             it, the approach nearest to from's joints, every state acceptable. scratch is a state
-            to work in. False when none of Grasping::ATTEMPTS solutions has them all. */
+            to work in. False when none of Grasping::ATTEMPTS solutions has them all, or when ptc
+            became true before one had. */
         bool solvePush(const ompl::base::State *from, unsigned int object, const ObjectPose &start,
                        const ObjectPose &end, const Eigen::Vector2d &direction, ompl::base::State *scratch,
-                       Grasping::Solution &joints) const;
+                       Grasping::Solution &joints, const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Appends push segments from trajectory.back() to `end` (the object pushed there in
             direction): one when the tool keeps its push pose, else two halves through the push
             pose halfway, found by inverse kinematics near the joints' midpoint, each again split at

@@ -1,7 +1,9 @@
 #pragma once
 
 #include "ompl_mm/primitives/Primitive.h"
+#include "ompl_mm/primitives/PrimitiveTally.h"
 
+#include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/util/RandomNumbers.h>
 
 #include <vector>
@@ -34,13 +36,24 @@ namespace ompl_mm
         /** The primitives it chains. */
         const std::vector<PrimitivePtr> &primitives() const { return primitives_; }
 
+        /** How its primitives fared in plan() so far (attempts, and why they found no motion);
+            callers that check the motions note them here too (PrimitiveTally::motion). */
+        PrimitiveTally &tally() { return tally_; }
+        /** As tally(), read-only. */
+        const PrimitiveTally &tally() const { return tally_; }
+
         /** Plans from `from` towards `to` with at most MAX_STEPS primitive applications, drawing
             the order of the primitives from rng; trajectory is reset to start at from and holds the
-            waypoints found, whatever the outcome. */
+            waypoints found, whatever the outcome. Once ptc is true it stops before the next
+            primitive application and within one (Primitive::propagate with ptc), with the outcome of
+            the waypoints found so far (Partial or Failed). */
         Outcome plan(const ompl::base::State *from, const ompl::base::State *to, Trajectory &trajectory,
-                     ompl::RNG &rng);
+                     ompl::RNG &rng,
+                     const ompl::base::PlannerTerminationCondition &ptc =
+                         ompl::base::plannerNonTerminatingCondition());
 
     private:
+        PrimitiveTally tally_;
         const ManipulationStateSpace *space_;
         std::vector<PrimitivePtr> primitives_;
         std::vector<std::size_t> order_;

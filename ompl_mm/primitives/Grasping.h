@@ -3,10 +3,12 @@
 #include "ompl_mm/base/ManipulationStateSpace.h"
 #include "ompl_mm/robot/InverseKinematics.h"
 
+#include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/util/RandomNumbers.h>
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,7 +32,17 @@ namespace ompl_mm
             double tilt{0.0};  ///< approach axis from the downward vertical, radians
             double approachDistance{
                 0.05};  ///< length of the approach before a grasp and the retreat after a placement, metres
+            /** How far below the object's top the tool point grasps, metres (>= 0; deeper than the
+                object's height is its base); unset: at the object's centre, or higher when the hand
+                comes down over the object (its first shape, handReach() back along the tilted
+                approach axis, lies above the object's footprint) and would reach its top: then as
+                deep as leaves the hand HAND_MARGIN above the top. */
+            std::optional<double> depth;
         };
+
+        /** How far the hand stays clear of what its grasp holds from above: the automatic grasp
+            keeps the hand's first shape this far above the object's top, metres. */
+        static constexpr double HAND_MARGIN = 0.005;
 
         /** Grasps in space with settings, solving with a solver made by factory (IkSolver when it
             is empty) for the scene's robot base. @pre space outlives it.
@@ -41,6 +53,18 @@ namespace ompl_mm
 
         /** The settings in force. */
         const Settings &settings() const { return settings_; }
+
+        /** How far behind the tool point, back along its approach axis (tool -z), the hand's first
+            collision shape begins, metres (the palm of a parallel gripper between its open
+            fingers): the deepest an object's top can reach into the hand. The hand is the tool link
+            and the links fixed to it (fixed joints, and joints the scene holds); meshes count as
+            their convex hulls. Infinity when no shape lies on that line within MAX_HAND_REACH. */
+        double handReach() const { return handReach_; }
+        /** How far handReach() looks, metres. */
+        static constexpr double MAX_HAND_REACH = 0.5;
+        /** The height above the object's base at which the tool point grasps it, metres (see
+            Settings::depth). */
+        double graspHeight(unsigned int object) const;
         /** The solver (its statistics tell the time spent). */
         const InverseKinematics &inverseKinematics() const { return *ik_; }
 
@@ -78,11 +102,14 @@ namespace ompl_mm
         /** The joint vectors of one solution of a primitive (e.g. grasp, approach, lift). */
         using Solution = std::vector<std::vector<double>>;
         /** Solves from the robot's joints `start`, then from random joints, ATTEMPTS times at most,
-            until CANDIDATES attempts succeed, and keeps in best the success whose joint vector
-            number `compared` is nearest to start. solve gets a solution whose vector 0 holds the
-            seed, fills it in and says whether it succeeded. False, best unchanged, when none did. */
+            until CANDIDATES attempts succeed or ptc is true, and keeps in best the success whose
+            joint vector number `compared` is nearest to start. solve gets a solution whose vector 0
+            holds the seed, fills it in and says whether it succeeded. False, best unchanged, when
+            none did. */
         bool nearestSolution(const double *start, std::size_t compared, Solution &best,
-                             const std::function<bool(Solution &)> &solve);
+                             const std::function<bool(Solution &)> &solve,
+                             const ompl::base::PlannerTerminationCondition &ptc =
+                                 ompl::base::plannerNonTerminatingCondition());
         /** The most a joint may turn in a short move, radians or metres. */
         static constexpr double MAX_SHORT_MOVE = 0.5;
 
@@ -99,6 +126,8 @@ namespace ompl_mm
         static constexpr double GRASP_TOLERANCE = 1e-4;
 
     private:
+        /** Measures handReach(). */
+        double measureHandReach() const;
         /** The solver's frame relative to the tool point at joints q. */
         Eigen::Isometry3d solvedInTool(const double *q) const;
         /** Solves for the solver's frame at target from seed q, into q when found. */
@@ -107,6 +136,7 @@ namespace ompl_mm
 
         const ManipulationStateSpace *space_;
         Settings settings_;
+        double handReach_;
         std::unique_ptr<InverseKinematics> ik_;
         std::vector<double> work_;
         ompl::RNG rng_;

@@ -37,6 +37,10 @@ namespace ompl_mm
             grasp solutions has both. */
         bool propagate(const ompl::base::State *from, const ompl::base::State *to,
                        Trajectory &trajectory) const override;
+        /** Primitive's hook: as above, but stops searching soon after ptc becomes true (between
+            inverse kinematics solves): then false, nothing appended, unless a solution was found. */
+        bool propagate(const ompl::base::State *from, const ompl::base::State *to, Trajectory &trajectory,
+                       const ompl::base::PlannerTerminationCondition &ptc) const override;
         /** Primitive's hook: a pickup segment when every object rests in `from`, exactly one
             moves, it is held in `to`, and it keeps its grasp (Grasping::sameGrasp). */
         std::optional<SegmentLabel> explain(const ompl::base::State *from,

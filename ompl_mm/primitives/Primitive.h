@@ -2,12 +2,14 @@
 
 #include "ompl_mm/primitives/Trajectory.h"
 
+#include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/StateValidityChecker.h>
 
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace ompl_mm
 {
@@ -38,6 +40,20 @@ namespace ompl_mm
             Returns false, appending nothing, when the primitive cannot act (e.g. no IK). */
         virtual bool propagate(const ompl::base::State *from, const ompl::base::State *to,
                                Trajectory &trajectory) const = 0;
+        /** As propagate(from, to, trajectory), but stops searching soon after ptc becomes true
+            (then false, nothing appended, unless it has found its motion already): so a planner's
+            time limit reaches into the primitive's own search (inverse kinematics attempts).
+            EmptySpacePlanner calls this one. The default ignores ptc, which suits primitives whose
+            propagation is quick (no inverse kinematics, no collision checks: Transit, PushMobile);
+            primitives that search override it and implement the other overload with a condition
+            that never ends. */
+        virtual bool propagate(const ompl::base::State *from, const ompl::base::State *to,
+                               Trajectory &trajectory,
+                               const ompl::base::PlannerTerminationCondition &ptc) const
+        {
+            static_cast<void>(ptc);
+            return propagate(from, to, trajectory);
+        }
 
         /** The label of a segment this primitive could have made from `from` to `to` (straight
             interpolation in the manipulation space), or nothing when its motion cannot move
@@ -46,6 +62,11 @@ namespace ompl_mm
             not its concern. */
         virtual std::optional<SegmentLabel> explain(const ompl::base::State *from,
                                                     const ompl::base::State *to) const = 0;
+
+        /** Why the primitive last turned a state of its own down (e.g. "robot link 'hand' and object
+            'cyl1' collide"), or "" when it has not since the last call; clears it. A planner asks
+            after a propagate that found no motion (PrimitiveTally). */
+        std::string takeRejection() const { return std::exchange(rejection_, std::string()); }
 
         /** Seconds the primitive has spent in inverse kinematics since it was made (0 for those
             that need none); planners report it (MOPL's time_ik_s). */
@@ -80,11 +101,9 @@ namespace ompl_mm
             and it slides (slides()) keeping its yaw; -1 when that is not so. */
         int onlySlidingObject(const ompl::base::State *a, const ompl::base::State *b) const;
 
-        /** True when no checker is set or the checker finds state valid. */
-        bool acceptable(const ompl::base::State *state) const
-        {
-            return !checker_ || checker_->isValid(state);
-        }
+        /** True when no checker is set or the checker finds state valid; otherwise keeps why for
+            takeRejection(). */
+        bool acceptable(const ompl::base::State *state) const;
 
         const ManipulationStateSpace *space_;  ///< the space the primitive plans in, not owned
 
@@ -96,6 +115,7 @@ namespace ompl_mm
         std::string name_;
         PrimitiveKind kind_;
         ompl::base::StateValidityCheckerPtr checker_;
+        mutable std::string rejection_;  ///< see takeRejection()
     };
 
     /** Shared ownership of a primitive: the setup, the planner and its empty-space planner hold the

@@ -35,6 +35,10 @@ namespace ompl_mm
             place is off by more than the grasp tolerance. */
         bool propagate(const ompl::base::State *from, const ompl::base::State *to,
                        Trajectory &trajectory) const override;
+        /** Primitive's hook: as above, but stops searching soon after ptc becomes true (between
+            inverse kinematics solves): then false, nothing appended, unless a solution was found. */
+        bool propagate(const ompl::base::State *from, const ompl::base::State *to, Trajectory &trajectory,
+                       const ompl::base::PlannerTerminationCondition &ptc) const override;
         /** Primitive's hook: a transfer segment when exactly one object is held in `from`, no
             other object moves, and it keeps its grasp (Grasping::sameGrasp). */
         std::optional<SegmentLabel> explain(const ompl::base::State *from,
@@ -47,9 +51,9 @@ namespace ompl_mm
         int heldObject(const ompl::base::State *state) const;
         /** Fills solution (its vector 0 holding the seed) with the joints that place an object
             held by `grasp` at `place`, then of the retreat and, with a place height, of the pose
-            above the place. */
-        bool solvePlace(const Eigen::Isometry3d &grasp, const ObjectPose &place,
-                        Grasping::Solution &solution) const;
+            above the place. False when that fails or ptc is true after the placing solve. */
+        bool solvePlace(const Eigen::Isometry3d &grasp, const ObjectPose &place, Grasping::Solution &solution,
+                        const ompl::base::PlannerTerminationCondition &ptc) const;
 
         std::shared_ptr<Grasping> grasping_;
         double placeHeight_;

@@ -18,6 +18,9 @@ namespace ompl_mm
         @returns the path, or "" when no candidate exists; tried lists the places looked. */
     std::string resolveMeshFile(const std::string &filename, const std::string &urdfFile, std::string &tried);
 
+    /** The key of a mesh file read at a scale, for caches of what is read from it. */
+    std::string meshCacheKey(const std::string &path, const Eigen::Vector3d &scale);
+
     /** Meshes read so far, by file and scale: a file several links use is read once. */
     using MeshCache = std::map<std::string, std::shared_ptr<const TriangleMesh>>;
 

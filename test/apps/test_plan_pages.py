@@ -1,9 +1,10 @@
 #!/usr/bin/python3
-"""The 3-D plan pages (--html) of ompl_mm_plan (MOBILE BLOCKED, KUKA TABLE, KUKA CABINET) and
-ompl_phys_plan, loaded in headless Chromium: the page draws its first picture with no JavaScript
-error or warning, names the current segment, and its screenshots at the start and the middle of the
-timeline differ from each other and from a blank page.
-A MOBILE BLOCKED page stays under 2 MB. Needs Debian's chromium and python3-matplotlib (PNG reading).
+"""The 3-D plan pages (--html) of ompl_mm_plan (MOBILE BLOCKED, KUKA TABLE, KUKA CABINET, a Franka
+Panda with visual meshes picking a cylinder) and ompl_phys_plan, loaded in headless Chromium: the
+page draws its first picture with no JavaScript error or warning, names the current segment, and its
+screenshots at the start and the middle of the timeline differ from each other and from a blank page.
+A MOBILE BLOCKED page stays under 2 MB, the Panda's (its visual meshes reduced) under 3 MB.
+Needs Debian's chromium and python3-matplotlib (PNG reading).
 
 Prints "ok - name" / "not ok - name" per check, then "N passed, M failed"; exits 1 on any failure.
 """
@@ -19,6 +20,24 @@ import matplotlib.image
 CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
                   "--hide-scrollbars", "--window-size=1000,700", "--virtual-time-budget=3000"]
 MAX_PAGE_BYTES = 2 * 1024 * 1024
+MAX_PANDA_PAGE_BYTES = 3 * 1024 * 1024
+# a Franka Panda (scenes/robots/panda) moving a cylinder from one table to another; {robots} is its folder
+PANDA_SCENE = """<scene name="panda_pick" time_limit="60">
+  <robot urdf="{robots}/panda.urdf" srdf="{robots}/panda.srdf" group="panda_arm" tool_link="panda_grasptarget">
+    <fixed_joint name="panda_finger_joint1" value="0.04"/>
+  </robot>
+  <obstacle name="floor"><origin xyz="0 0 -0.035"/><box size="2 2 0.05"/></obstacle>
+  <obstacle name="table1_top"><origin xyz="0.5 0 0.405"/><box size="0.54 0.54 0.05"/></obstacle>
+  <obstacle name="table2_top"><origin xyz="0.2 -0.6 0.405"/><box size="0.54 0.54 0.05"/></obstacle>
+  <surface name="table1" height="0.43" min="0.25 -0.25" max="0.75 0.25" obstacle="table1_top"/>
+  <surface name="table2" height="0.43" min="-0.05 -0.75" max="0.45 -0.35" obstacle="table2_top"/>
+  <region name="air" min="-0.2 -0.65 0.45" max="0.7 0.25 0.95"/>
+  <object name="cyl1"><cylinder radius="0.03" length="0.07"/></object>
+  <start><robot state="ready"/><object name="cyl1" xyz="0.55 0.1 0.43"/></start>
+  <goal><robot state="ready" tolerance="0.01"/><object name="cyl1" xyz="0.2 -0.5 0.43" tolerance="0.01"/></goal>
+  <primitives><transit/><pickup lift_height="0.10" approach_distance="0.05"/><transfer_rigid approach_distance="0.05"/></primitives>
+</scene>
+"""
 # a screenshot "differs" from another when this share of its pixels does
 MIN_CHANGED_SHARE = 0.002
 
@@ -122,6 +141,19 @@ def main():
                  done.returncode == 0 and os.path.isfile(cabinet_page), done.stderr)
     check_page(checks, "KUKA CABINET", cabinet_page,
                r"(transit|push cyl\d|pickup cyl\d|transfer cyl\d) — [\d.]+ s of [\d.]+ s$", blank)
+
+    # a real robot's visual meshes: the page stays small and draws them
+    panda_scene = os.path.join(args.scratch, "panda_pick.xml")
+    with open(panda_scene, "w") as f:
+        f.write(PANDA_SCENE.format(robots=os.path.join(os.path.abspath(args.scenes), "robots", "panda", "franka_panda")))
+    panda_page = os.path.join(args.scratch, "panda_pick.html")
+    done = subprocess.run([args.mm_plan, panda_scene, "--seed", "1", "--html", panda_page], capture_output=True,
+                          text=True, timeout=300)
+    checks.check("ompl_mm_plan --html writes the Franka Panda page with no warning",
+                 done.returncode == 0 and os.path.isfile(panda_page) and "Warning" not in done.stderr, done.stderr)
+    size = os.path.getsize(panda_page) if os.path.isfile(panda_page) else 0
+    checks.check(f"the Franka Panda page is under 3 MB ({size} bytes)", 0 < size < MAX_PANDA_PAGE_BYTES)
+    check_page(checks, "Franka Panda", panda_page, r"(transit|pickup cyl1|transfer cyl1) — [\d.]+ s of [\d.]+ s$", blank)
 
     phys_page = os.path.join(args.scratch, "scene2.html")
     done = subprocess.run([args.phys_plan, os.path.join(args.scenes, "physics", "scene2.xml"), "--planner",

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -55,7 +56,54 @@ namespace ompl_core
                    shortNumber(q.y(), 5) + "," + shortNumber(q.z(), 5) + "," + shortNumber(q.w(), 5) + "]";
         }
 
-        void writeSolid(std::ostream &out, const ViewerSolid &solid)
+        /** Shared meshes are written in whole multiples of this, metres: integers are shorter
+            than decimals, and 0.1 mm is finer than any screen shows. */
+        constexpr double MESH_UNIT = 1e-4;
+
+        /** The shared meshes of a plan, each numbered once in order of first use. */
+        class MeshTable
+        {
+        public:
+            explicit MeshTable(const ViewerPlan &plan)
+            {
+                for (const std::vector<ViewerBody> *bodies : {&plan.fixed, &plan.goals, &plan.moving})
+                    for (const ViewerBody &body : *bodies)
+                        for (const ViewerSolid &solid : body.solids)
+                            if (solid.kind == ViewerSolid::Kind::Mesh && solid.mesh &&
+                                index_.emplace(solid.mesh.get(), meshes_.size()).second)
+                                meshes_.push_back(solid.mesh.get());
+            }
+
+            /** The number of a solid's shared mesh. @pre the plan's solid has one. */
+            std::size_t indexOf(const ViewerMesh *mesh) const { return index_.at(mesh); }
+
+            /** "[{"vertices":[...],"triangles":[...]},...]", corners in MESH_UNITs. */
+            void write(std::ostream &out) const
+            {
+                out << "[";
+                for (std::size_t m = 0; m < meshes_.size(); ++m)
+                {
+                    out << (m ? ",\n" : "") << "{\"vertices\":[";
+                    const std::vector<Eigen::Vector3d> &vertices = meshes_[m]->vertices;
+                    for (std::size_t i = 0; i < vertices.size(); ++i)
+                        for (int k = 0; k < 3; ++k)
+                            out << (i > 0 || k > 0 ? "," : "") << std::llround(vertices[i][k] / MESH_UNIT);
+                    out << "],\"triangles\":[";
+                    const std::vector<std::array<int, 3>> &triangles = meshes_[m]->triangles;
+                    for (std::size_t i = 0; i < triangles.size(); ++i)
+                        out << (i ? "," : "") << triangles[i][0] << "," << triangles[i][1] << ","
+                            << triangles[i][2];
+                    out << "]}";
+                }
+                out << "]";
+            }
+
+        private:
+            std::vector<const ViewerMesh *> meshes_;
+            std::map<const ViewerMesh *, std::size_t> index_;
+        };
+
+        void writeSolid(std::ostream &out, const ViewerSolid &solid, const MeshTable &meshes)
         {
             out << "{\"pose\":" << pose(solid.pose) << ",";
             switch (solid.kind)
@@ -72,6 +120,11 @@ namespace ompl_core
                     break;
                 case ViewerSolid::Kind::Mesh:
                 {
+                    if (solid.mesh)
+                    {
+                        out << "\"kind\":\"mesh\",\"mesh\":" << meshes.indexOf(solid.mesh.get());
+                        break;
+                    }
                     out << "\"kind\":\"mesh\",\"vertices\":[";
                     for (std::size_t i = 0; i < solid.vertices.size(); ++i)
                         out << (i ? "," : "") << position(solid.vertices[i]);
@@ -83,10 +136,12 @@ namespace ompl_core
                     break;
                 }
             }
+            if (!solid.colour.empty())
+                out << ",\"colour\":" << jsonQuoted(solid.colour);
             out << "}";
         }
 
-        void writeBodies(std::ostream &out, const std::vector<ViewerBody> &bodies)
+        void writeBodies(std::ostream &out, const std::vector<ViewerBody> &bodies, const MeshTable &meshes)
         {
             out << "[";
             for (std::size_t b = 0; b < bodies.size(); ++b)
@@ -98,7 +153,7 @@ namespace ompl_core
                 for (std::size_t s = 0; s < body.solids.size(); ++s)
                 {
                     out << (s ? "," : "");
-                    writeSolid(out, body.solids[s]);
+                    writeSolid(out, body.solids[s], meshes);
                 }
                 out << "]}";
             }
@@ -108,13 +163,17 @@ namespace ompl_core
         std::string planJson(const ViewerPlan &plan)
         {
             std::ostringstream out;
+            const MeshTable meshes(plan);
             out << "{\"title\":" << jsonQuoted(plan.title)
-                << ",\"frameStep\":" << shortNumber(plan.frameStep, 6) << ",\"fixed\":";
-            writeBodies(out, plan.fixed);
+                << ",\"frameStep\":" << shortNumber(plan.frameStep, 6)
+                << ",\"meshUnit\":" << shortNumber(MESH_UNIT, 6) << ",\"meshes\":";
+            meshes.write(out);
+            out << ",\n\"fixed\":";
+            writeBodies(out, plan.fixed, meshes);
             out << ",\"goals\":";
-            writeBodies(out, plan.goals);
+            writeBodies(out, plan.goals, meshes);
             out << ",\"moving\":";
-            writeBodies(out, plan.moving);
+            writeBodies(out, plan.moving, meshes);
             out << ",\n\"frames\":[";
             for (std::size_t k = 0; k < plan.frames.size(); ++k)
             {

@@ -448,7 +448,7 @@ namespace ompl_mm
 
     CollisionWorld::SweepCheck CollisionWorld::checkSweep(
         const Configuration &from, const Configuration &to,
-        const std::function<Configuration(double)> &configurationAt) const
+        const std::function<Configuration(double)> &configurationAt, const std::function<bool()> &stop) const
     {
         findSweptPairs(from, to);
         std::vector<SweptPair> &pairs = sweptPairs_;
@@ -476,7 +476,7 @@ namespace ompl_mm
                 const Measured measured = exact ? distance(pair) : Measured{apart, Measure::Boxes};
                 const double d = measured.distance;
                 if (d < MIN_CLEARANCE)
-                    return {false, safe, blockingObject(pair)};
+                    return {false, safe, blockingObject(pair), {pair.a->label, pair.b->label}};
                 clear = clear && d >= SAFE_CLEARANCE;
                 // stop a safe clearance short of a contact ahead, then close in as far as keeps half
                 // the least clearance (so any part of a motion it accepts passes too)
@@ -505,6 +505,8 @@ namespace ompl_mm
                 safe = t;
             if (pairs.empty() || t + step >= 1.0)
                 return {true, 1.0};
+            if (stop && stop())
+                return {false, safe, -1, {}, true};
             t += step;
             placeBodies(configurationAt(t));
         }

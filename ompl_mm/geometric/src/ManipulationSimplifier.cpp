@@ -1,5 +1,7 @@
 #include "ompl_mm/geometric/ManipulationSimplifier.h"
 
+#include "ompl_mm/base/StepTermination.h"
+
 #include <ompl/geometric/PathSimplifier.h>
 #include <ompl/util/Exception.h>
 
@@ -77,7 +79,7 @@ namespace ompl_mm
     ManipulationSimplifier::ManipulationSimplifier(const ompl::base::SpaceInformationPtr &si)
         : si_(si),
           space_(si->getStateSpace()->as<ManipulationStateSpace>()),
-          validator_(std::dynamic_pointer_cast<const ManipulationMotionValidator>(si->getMotionValidator())),
+          validator_(std::dynamic_pointer_cast<ManipulationMotionValidator>(si->getMotionValidator())),
           planner_(space_, validator_ ? validator_->primitives() : std::vector<PrimitivePtr>()),
           connector_(si),
           straightener_(si)
@@ -93,10 +95,17 @@ namespace ompl_mm
         const ompl::base::PlannerTerminationCondition &ptc) const
     {
         Outcome outcome;
+        // ptc between the steps, as before; within them a view of it that asks again only when a
+        // step takes long (a condition may count its evaluations). Every motion check of this
+        // run, OMPL's steps' included, stops at it too (the motion then counts as invalid, so no
+        // change rests on it)
+        const StepTermination inner(ptc);
+        const ompl::base::PlannerTerminationCondition &stop = inner.condition();
+        const ManipulationMotionValidator::TerminationScope bounded(*validator_, stop);
         path.removeRepeatedStates();
-        while (!ptc && removeRoundTrip(path, goal, rng))
+        while (!ptc && removeRoundTrip(path, goal, rng, stop))
             ++outcome.roundTripsRemoved;
-        outcome.pushesShortened = shortenPushes(path, goal, rng, ptc);
+        outcome.pushesShortened = shortenPushes(path, goal, rng, stop);
         // windows from one primitive run's start to a later run's end: what OMPL's shortcuts cannot
         // do, since they keep every manipulation, is to chain primitives anew across runs
         for (unsigned int attempt = 0; attempt < windowAttempts && !ptc; ++attempt)
@@ -107,17 +116,17 @@ namespace ompl_mm
             const int n = static_cast<int>(bounds.size());
             const int first = rng.uniformInt(0, n - 3);
             const int last = rng.uniformInt(first + 2, n - 1);
-            if (replanWindow(path, bounds[first], bounds[last], rng))
+            if (replanWindow(path, bounds[first], bounds[last], rng, stop))
                 ++outcome.windowsReplanned;
         }
         if (!ptc)
-            shortenWithOMPL(path, rng);
+            shortenWithOMPL(path, rng, stop);
         // a second round of OMPL's steps only where the tool moves straight already (mobile
         // bases: 100 seeds of MOBILE BLOCKED 15.71 -> 15.29 m): on an arm its B-spline leaves many
         // short joint-space arcs that the straightener no longer takes on (KUKA TABLE, 100 seeds:
         // 7.89 m with it before the straightener, 7.61 m without)
         if (!ptc && straightener_.straighten(path, ptc) == 0 && !ptc)
-            shortenWithOMPL(path, rng);
+            shortenWithOMPL(path, rng, stop);
         path.removeRepeatedStates();
         return outcome;
     }
@@ -142,7 +151,8 @@ namespace ompl_mm
     }
 
     bool ManipulationSimplifier::removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal,
-                                                 ompl::RNG &rng) const
+                                                 ompl::RNG &rng,
+                                                 const ompl::base::PlannerTerminationCondition &ptc) const
     {
         for (unsigned int object = 0; object < space_->objectCount(); ++object)
         {
@@ -150,6 +160,8 @@ namespace ompl_mm
             for (std::size_t i = 0; i < runs.size(); ++i)
                 for (std::size_t j = runs.size(); j-- > i;)
                 {
+                    if (ptc)
+                        return false;
                     const ObjectPose before = space_->objectPose(path.getState(runs[i].first), object);
                     if (!samePose(before, space_->objectPose(path.getState(runs[j].second), object)))
                         continue;
@@ -157,11 +169,11 @@ namespace ompl_mm
                     // it found the object, or at one of its waypoints short of the start) and leave
                     // the object there for the rest of the way
                     if (holdObject(path, object, before, runs[i].first, runs[j].second, goal,
-                                   CONNECT_ITERATIONS, rng))
+                                   CONNECT_ITERATIONS, rng, ptc))
                         return true;
-                    for (std::size_t stop = runs[j].first; stop < runs[j].second; ++stop)
+                    for (std::size_t stop = runs[j].first; stop < runs[j].second && !ptc; ++stop)
                         if (holdObject(path, object, space_->objectPose(path.getState(stop), object), stop,
-                                       path.getStateCount() - 1, goal, CONNECT_ITERATIONS, rng))
+                                       path.getStateCount() - 1, goal, CONNECT_ITERATIONS, rng, ptc))
                             return true;
                 }
         }
@@ -195,7 +207,7 @@ namespace ompl_mm
             {
                 const ObjectPose pose = space_->objectPose(path.getState(stop), run.object);
                 return holdObject(held, run.object, pose, stop, path.getStateCount() - 1, goal,
-                                  SHORTER_PUSH_CONNECT_ITERATIONS, rng) &&
+                                  SHORTER_PUSH_CONNECT_ITERATIONS, rng, ptc) &&
                        held.toolPathLength() <= length;
             };
             // no push at all first; else bisect for the earliest waypoint of the run that will do
@@ -203,7 +215,7 @@ namespace ompl_mm
             ManipulationPath best(path);
             const bool dropped = heldFrom(run.first, best);
             bool found = dropped;
-            for (std::size_t fails = run.first, does = run.end; !dropped && does - fails > 1;)
+            for (std::size_t fails = run.first, does = run.end; !dropped && does - fails > 1 && !ptc;)
             {
                 const std::size_t middle = fails + (does - fails) / 2;
                 ManipulationPath held(path);
@@ -228,7 +240,8 @@ namespace ompl_mm
     bool ManipulationSimplifier::holdObject(ManipulationPath &path, unsigned int object,
                                             const ObjectPose &pose, std::size_t first, std::size_t last,
                                             const ompl::base::Goal *goal, unsigned int routeIterations,
-                                            ompl::RNG &rng) const
+                                            ompl::RNG &rng,
+                                            const ompl::base::PlannerTerminationCondition &ptc) const
     {
         std::vector<ompl::base::State *> held;
         for (std::size_t k = first; k <= last; ++k)
@@ -250,6 +263,11 @@ namespace ompl_mm
         bool routed = true;
         for (std::size_t k = 0; routed && k + 1 < held.size();)
         {
+            if (ptc)
+            {
+                routed = false;
+                break;
+            }
             const std::optional<SegmentLabel> label = validator_->explain(held[k], held[k + 1]);
             if (label && si_->checkMotion(held[k], held[k + 1]))
             {
@@ -264,7 +282,7 @@ namespace ompl_mm
                    !si_->isValid(held[next]))
                 ++next;
             routed = next < held.size() && !space_->anyObjectMoves(held[k], held[next]) &&
-                     connector_.connect(result, held[next], routeIterations, rng);
+                     connector_.connect(result, held[next], routeIterations, rng, ptc);
             k = next;
         }
         for (ompl::base::State *state : held)
@@ -276,11 +294,12 @@ namespace ompl_mm
     }
 
     bool ManipulationSimplifier::replanWindow(ManipulationPath &path, std::size_t first, std::size_t last,
-                                              ompl::RNG &rng) const
+                                              ompl::RNG &rng,
+                                              const ompl::base::PlannerTerminationCondition &ptc) const
     {
         Trajectory replanned(space_);
         const EmptySpacePlanner::Outcome outcome =
-            planner_.plan(path.getState(first), path.getState(last), replanned, rng);
+            planner_.plan(path.getState(first), path.getState(last), replanned, rng, ptc);
         if (outcome == EmptySpacePlanner::Outcome::AlreadyThere)
             replanned.append(path.getState(last), {PrimitiveKind::Transit, -1});
         else if (outcome != EmptySpacePlanner::Outcome::Reached)
@@ -291,7 +310,8 @@ namespace ompl_mm
         return true;
     }
 
-    void ManipulationSimplifier::shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng) const
+    void ManipulationSimplifier::shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng,
+                                                 const ompl::base::PlannerTerminationCondition &ptc) const
     {
         // OMPL's own shortcutting and smoothing is safe here, since the motion validator accepts
         // only primitives' motions and the path relabels what it changes. Its steps, not
@@ -299,14 +319,19 @@ namespace ompl_mm
         // place (objects and all); a copy, kept only when all of it checks at the resolution
         ManipulationPath shorter(path);
         SeededPathSimplifier simplifier(si_, rng.uniformInt(1, std::numeric_limits<int>::max()));
-        // shortcuts while they find some
-        for (unsigned int k = 0; k < SHORTCUT_PASSES; ++k)
+        // shortcuts while they find some; the steps' motion checks stop at ptc (the caller's
+        // TerminationScope), so a step under way when it becomes true ends soon after
+        for (unsigned int k = 0; k < SHORTCUT_PASSES && !ptc; ++k)
             if (!simplifier.shortcutPath(shorter))
                 break;
-        simplifier.smoothBSpline(shorter, 3, shorter.length() / 100.0);
-        simplifier.reduceVertices(shorter);
-        simplifier.collapseCloseVertices(shorter);
-        if (shorter.check() && shorter.toolPathLength() < path.toolPathLength())
+        if (!ptc)
+            simplifier.smoothBSpline(shorter, 3, shorter.length() / 100.0);
+        if (!ptc)
+            simplifier.reduceVertices(shorter);
+        if (!ptc)
+            simplifier.collapseCloseVertices(shorter);
+        // a check stopped by ptc fails, so the copy is kept only when all of it was checked
+        if (!ptc && shorter.check() && shorter.toolPathLength() < path.toolPathLength())
             path = shorter;
     }
 

@@ -70,7 +70,8 @@ namespace ompl_mm
     }
 
     bool TransitConnector::connect(Trajectory &trajectory, const ompl::base::State *to,
-                                   unsigned int maxIterations, ompl::RNG &rng) const
+                                   unsigned int maxIterations, ompl::RNG &rng,
+                                   const ompl::base::PlannerTerminationCondition &ptc) const
     {
         const SegmentLabel transit{PrimitiveKind::Transit, -1};
         if (si_->checkMotion(trajectory.back(), to))
@@ -82,7 +83,7 @@ namespace ompl_mm
         const auto *bounds = &space_->getSubspace(0)->as<ompl::base::RealVectorStateSpace>()->getBounds();
         ompl::base::State *sample = si_->cloneState(to);
         std::vector<const ompl::base::State *> path;
-        for (unsigned int iteration = 0; iteration < maxIterations && path.empty(); ++iteration)
+        for (unsigned int iteration = 0; iteration < maxIterations && path.empty() && !ptc; ++iteration)
         {
             for (unsigned int j = 0; j < space_->robotDimension(); ++j)
                 space_->robotValues(sample)[j] = rng.uniformReal(bounds->low[j], bounds->high[j]);
@@ -93,7 +94,7 @@ namespace ompl_mm
                 continue;
             // connect: the other tree steps towards the new node until it reaches it or is blocked
             int reached = -1;
-            for (int last = extend(other, grown[added].state); last >= 0;
+            for (int last = extend(other, grown[added].state); last >= 0 && !ptc;
                  last = extend(other, grown[added].state))
                 if (jointDistance(*space_, other[last].state, grown[added].state) < 1e-12)
                 {

@@ -1,55 +1,92 @@
 #include "ompl_mm/io/SceneHtml.h"
 
+#include "ompl_mm/io/MeshReduction.h"
 #include "ompl_mm/io/PlanColours.h"
+#include "ompl_mm/io/ScenePicture.h"
+#include "ompl_mm/robot/VisualModel.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
 
 namespace ompl_mm
 {
     namespace
     {
-        /** Support surfaces are drawn as slabs this thick, just below their height, metres. */
+        /** Support surfaces are drawn as slabs this thick, metres, SURFACE_RISE above their height:
+            an obstacle whose top the surface is then ends inside the slab, so the two faces never
+            fight for the same pixels, and objects resting on the surface sink in by SURFACE_RISE. */
         constexpr double SURFACE_THICKNESS = 0.004;
+        /** How far a surface's slab stands above the surface, metres. */
+        constexpr double SURFACE_RISE = 0.001;
         /** Opacity of goal poses. */
         constexpr double GOAL_OPACITY = 0.3;
 
-        ompl_core::ViewerSolid solidOf(const Shape &shape, const Eigen::Isometry3d &pose)
+        /** "#rrggbb" of a colour's red, green and blue. */
+        std::string cssColour(const Rgba &colour)
         {
-            ompl_core::ViewerSolid solid;
-            solid.pose = pose;
-            switch (shape.kind)
-            {
-                case Shape::Kind::Box:
-                    solid.kind = ompl_core::ViewerSolid::Kind::Box;
-                    solid.size = shape.boxSize;
-                    break;
-                case Shape::Kind::Cylinder:
-                    solid.kind = ompl_core::ViewerSolid::Kind::Cylinder;
-                    solid.radius = shape.radius;
-                    solid.length = shape.length;
-                    break;
-                case Shape::Kind::Sphere:
-                    solid.kind = ompl_core::ViewerSolid::Kind::Sphere;
-                    solid.radius = shape.radius;
-                    break;
-                case Shape::Kind::Mesh:
-                    solid.kind = ompl_core::ViewerSolid::Kind::Mesh;
-                    solid.vertices = shape.mesh->vertices;
-                    solid.triangles = shape.mesh->triangles;
-                    break;
-            }
-            return solid;
+            char text[8];
+            std::snprintf(text, sizeof text, "#%02x%02x%02x",
+                          static_cast<int>(std::lround(255.0 * colour[0])),
+                          static_cast<int>(std::lround(255.0 * colour[1])),
+                          static_cast<int>(std::lround(255.0 * colour[2])));
+            return text;
         }
 
-        /** The object's solid in its frame: the shape's centre lies half its height above the base. */
-        ompl_core::ViewerSolid objectSolid(const MovableObject &object)
+        /** The viewer's solids for shapes; a mesh reduced for the page (reduceMesh()) once, however
+            many solids use it. */
+        class ViewerSolids
         {
-            return solidOf(object.shape,
-                           Eigen::Isometry3d(Eigen::Translation3d(0.0, 0.0, object.shape.height() / 2)));
+        public:
+            ompl_core::ViewerSolid of(const Shape &shape, const Eigen::Isometry3d &pose)
+            {
+                ompl_core::ViewerSolid solid;
+                solid.pose = pose;
+                switch (shape.kind)
+                {
+                    case Shape::Kind::Box:
+                        solid.kind = ompl_core::ViewerSolid::Kind::Box;
+                        solid.size = shape.boxSize;
+                        break;
+                    case Shape::Kind::Cylinder:
+                        solid.kind = ompl_core::ViewerSolid::Kind::Cylinder;
+                        solid.radius = shape.radius;
+                        solid.length = shape.length;
+                        break;
+                    case Shape::Kind::Sphere:
+                        solid.kind = ompl_core::ViewerSolid::Kind::Sphere;
+                        solid.radius = shape.radius;
+                        break;
+                    case Shape::Kind::Mesh:
+                        solid.kind = ompl_core::ViewerSolid::Kind::Mesh;
+                        solid.mesh = reduced(*shape.mesh);
+                        break;
+                }
+                return solid;
+            }
+
+        private:
+            std::shared_ptr<const ompl_core::ViewerMesh> reduced(const TriangleMesh &mesh)
+            {
+                std::shared_ptr<const ompl_core::ViewerMesh> &entry = meshes_[&mesh];
+                if (!entry)
+                    entry = std::make_shared<const ompl_core::ViewerMesh>(reduceMesh(mesh).mesh);
+                return entry;
+            }
+
+            std::map<const TriangleMesh *, std::shared_ptr<const ompl_core::ViewerMesh>> meshes_;
+        };
+
+        /** How the robot looks: its URDF's visuals, or its collision shapes without a URDF file. */
+        VisualModel robotLook(const Scene &scene, const RobotModel &robot)
+        {
+            return scene.robot.urdfFile.empty() ? VisualModel::fromCollision(robot)
+                                                : VisualModel::fromUrdfFile(scene.robot.urdfFile, robot);
         }
 
         /** Builds the plan: the bodies, then the frames of the path. */
@@ -59,7 +96,8 @@ namespace ompl_mm
             ViewerPlanBuilder(const ManipulationSetup &setup, const std::string &title)
                 : space_(*setup.manipulationSpace()),
                   scene_(space_.model()->scene()),
-                  robot_(space_.model()->robot())
+                  robot_(space_.model()->robot()),
+                  look_(robotLook(scene_, robot_))
             {
                 plan_.title = title;
                 if (setup.getProblemDefinition()->getStartStateCount() == 0)
@@ -82,45 +120,63 @@ namespace ompl_mm
         private:
             void addWorld()
             {
+                // floor slabs light, so that what stands on them shows
                 for (const Obstacle &obstacle : scene_.obstacles)
                     plan_.fixed.push_back(
-                        {obstacle.name, OBSTACLE_COLOUR, 1.0, {solidOf(obstacle.shape, obstacle.pose)}});
+                        {obstacle.name,
+                         picture::isFloorSlab(scene_, obstacle) ? FLOOR_COLOUR : OBSTACLE_COLOUR,
+                         1.0,
+                         {solids_.of(obstacle.shape, obstacle.pose)}});
                 for (const SupportSurface &surface : scene_.surfaces)
                 {
                     ompl_core::ViewerSolid slab;
                     slab.size = Eigen::Vector3d(surface.max.x() - surface.min.x(),
                                                 surface.max.y() - surface.min.y(), SURFACE_THICKNESS);
                     const Eigen::Vector2d centre = (surface.min + surface.max) / 2;
-                    // just below the surface, so objects resting on it stand on the slab
                     slab.pose = Eigen::Translation3d(centre.x(), centre.y(),
-                                                     surface.height - SURFACE_THICKNESS / 2 - 1e-4);
+                                                     surface.height + SURFACE_RISE - SURFACE_THICKNESS / 2);
                     plan_.fixed.push_back({surface.name, SURFACE_COLOUR, 1.0, {slab}});
                 }
                 plan_.legend.push_back({"obstacle", OBSTACLE_COLOUR});
                 plan_.legend.push_back({"support surface", SURFACE_COLOUR});
             }
 
-            /** The robot's links that have shapes, then the objects. */
+            /** The robot's links that have shapes (visual, or else collision), then the objects. */
             void addMovingBodies()
             {
+                bool coloured = false;
                 for (std::size_t l = 0; l < robot_.links().size(); ++l)
                 {
-                    const Link &link = robot_.links()[l];
-                    if (link.shapes.empty())
+                    const LinkVisual &look = look_.links()[l];
+                    if (look.shapes.empty())
                         continue;
-                    ompl_core::ViewerBody body{link.name, ROBOT_COLOUR, 1.0, {}};
-                    for (const LinkShape &shape : link.shapes)
-                        body.solids.push_back(solidOf(shape.shape, shape.origin));
+                    ompl_core::ViewerBody body{robot_.links()[l].name, ROBOT_COLOUR, 1.0, {}};
+                    for (const VisualShape &shape : look.shapes)
+                    {
+                        body.solids.push_back(solids_.of(shape.shape, shape.origin));
+                        if (shape.colour)
+                            body.solids.back().colour = cssColour(*shape.colour);
+                        coloured = coloured || shape.colour.has_value();
+                    }
                     plan_.moving.push_back(body);
                     robotLinks_.push_back(l);
                 }
-                plan_.legend.push_back({"robot", ROBOT_COLOUR});
+                // a robot in colours of its own is no grey line in the legend
+                if (!coloured)
+                    plan_.legend.push_back({"robot", ROBOT_COLOUR});
                 for (unsigned int i = 0; i < scene_.objects.size(); ++i)
                 {
                     plan_.moving.push_back(
                         {scene_.objects[i].name, objectColour(i), 1.0, {objectSolid(scene_.objects[i])}});
                     plan_.legend.push_back({scene_.objects[i].name, objectColour(i)});
                 }
+            }
+
+            /** The object's solid in its frame: the shape's centre lies half its height above the base. */
+            ompl_core::ViewerSolid objectSolid(const MovableObject &object)
+            {
+                return solids_.of(object.shape, Eigen::Isometry3d(Eigen::Translation3d(
+                                                    0.0, 0.0, object.shape.height() / 2)));
             }
 
             /** Objects at their goals, "don't care" coordinates at their start values, and the robot at
@@ -158,8 +214,8 @@ namespace ompl_mm
                 robot_.forwardKinematics(q.data(), scene_.robot.basePose, frames);
                 ompl_core::ViewerBody body{"goal robot", ROBOT_COLOUR, GOAL_OPACITY, {}};
                 for (const std::size_t l : robotLinks_)
-                    for (const LinkShape &shape : robot_.links()[l].shapes)
-                        body.solids.push_back(solidOf(shape.shape, frames[l] * shape.origin));
+                    for (const VisualShape &shape : look_.links()[l].shapes)
+                        body.solids.push_back(solids_.of(shape.shape, frames[l] * shape.origin));
                 plan_.goals.push_back(body);
             }
 
@@ -235,6 +291,8 @@ namespace ompl_mm
             const ManipulationStateSpace &space_;
             const Scene &scene_;
             const RobotModel &robot_;
+            const VisualModel look_;  ///< how the robot's links look
+            ViewerSolids solids_;
             const ompl::base::State *start_{nullptr};
             std::vector<std::size_t> robotLinks_;  ///< links with shapes, in the order of plan_.moving
             ompl_core::ViewerPlan plan_;

@@ -77,10 +77,22 @@ namespace ompl_mm::picture
             return hull.empty() ? std::vector<Eigen::Vector2d>{points.front()} : hull;
         }
 
-        /** Points of a shape, in its frame, whose convex hull holds it: a box's corners (a mesh's
-            bounding box's), a cylinder's rims; not for spheres. */
+        /** Points of a shape, in its frame, whose convex hull is its own: a box's corners, a
+            cylinder's rims, a mesh's convex hull's corners (all its vertices when they span no
+            volume); not for spheres. */
         std::vector<Eigen::Vector3d> hullPoints(const Shape &shape)
         {
+            if (shape.kind == Shape::Kind::Mesh && shape.mesh != nullptr)
+            {
+                try
+                {
+                    return shape.mesh->convexHull()->vertices;
+                }
+                catch (const ompl::Exception &)
+                {
+                    return shape.mesh->vertices;  // flat: its vertices outline it as well
+                }
+            }
             std::vector<Eigen::Vector3d> points;
             if (shape.kind == Shape::Kind::Cylinder)
             {
@@ -93,19 +105,17 @@ namespace ompl_mm::picture
                     }
                 return points;
             }
-            Eigen::AlignedBox3d box(-shape.boxSize / 2.0, shape.boxSize / 2.0);
-            if (shape.kind == Shape::Kind::Mesh && shape.mesh != nullptr)
-                box = shape.mesh->bounds;
+            const Eigen::AlignedBox3d box(-shape.boxSize / 2.0, shape.boxSize / 2.0);
             for (int c = 0; c < 8; ++c)
                 points.push_back(box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
             return points;
         }
 
-        /** A shape's outline seen from the side (x right, z up) when its centre has the world pose
-            frame: a circle for a sphere, else the convex hull of its projected hullPoints(). */
-        Footprint sideOutline(const Shape &shape, const Eigen::Isometry3d &frame)
+        /** A shape's outline in a view when its centre has the world pose frame: a circle for a
+            sphere, else the convex hull of its projected hullPoints(). */
+        Footprint viewOutline(View view, const Shape &shape, const Eigen::Isometry3d &frame)
         {
-            Footprint f{{}, project(View::Side, frame.translation()), 0.0};
+            Footprint f{{}, project(view, frame.translation()), 0.0};
             if (shape.kind == Shape::Kind::Sphere)
             {
                 f.radius = shape.radius;
@@ -113,7 +123,7 @@ namespace ompl_mm::picture
             }
             std::vector<Eigen::Vector2d> projected;
             for (const Eigen::Vector3d &p : hullPoints(shape))
-                projected.push_back(project(View::Side, frame * p));
+                projected.push_back(project(view, frame * p));
             f.corners = convexHull(std::move(projected));
             return f;
         }
@@ -123,9 +133,10 @@ namespace ompl_mm::picture
         {
             if (view == View::Top)
                 return footprint(shape, pose);
-            return sideOutline(
-                shape, Eigen::Translation3d(pose.position + Eigen::Vector3d(0.0, 0.0, shape.height() / 2.0)) *
-                           Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()));
+            return viewOutline(
+                View::Side, shape,
+                Eigen::Translation3d(pose.position + Eigen::Vector3d(0.0, 0.0, shape.height() / 2.0)) *
+                    Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()));
         }
 
         /** World height of the highest point of a shape at a pose. */
@@ -156,7 +167,7 @@ namespace ompl_mm::picture
         }
 
         /** True for an obstacle at or under the lowest surface (a floor slab), drawn faintly. */
-        bool isFloorSlab(const Obstacle &obstacle, long long lowestSurface)
+        bool underLowestSurface(const Obstacle &obstacle, long long lowestSurface)
         {
             return heightKey(topHeight(obstacle.shape, obstacle.pose)) <= lowestSurface;
         }
@@ -183,7 +194,7 @@ namespace ompl_mm::picture
             }
             for (const Obstacle &obstacle : scene.obstacles)
                 picture.ground.push_back({heightKey(topHeight(obstacle.shape, obstacle.pose)), false,
-                                          isFloorSlab(obstacle, lowestSurface),
+                                          underLowestSurface(obstacle, lowestSurface),
                                           footprint(obstacle.shape, obstacle.pose), obstacle.name});
             sortGround(picture);
         }
@@ -194,8 +205,9 @@ namespace ompl_mm::picture
             const long long lowestSurface = lowestSurfaceKey(scene);
             for (const Obstacle &obstacle : scene.obstacles)
                 picture.ground.push_back({heightKey(-obstacle.pose.translation().y()), false,
-                                          isFloorSlab(obstacle, lowestSurface),
-                                          sideOutline(obstacle.shape, obstacle.pose), obstacle.name});
+                                          underLowestSurface(obstacle, lowestSurface),
+                                          viewOutline(View::Side, obstacle.shape, obstacle.pose),
+                                          obstacle.name});
             sortGround(picture);
             for (const SupportSurface &s : scene.surfaces)
                 picture.surfaceLines.push_back({{s.min.x(), s.height}, {s.max.x(), s.height}, s.name});
@@ -221,8 +233,8 @@ namespace ompl_mm::picture
             return std::nullopt;
         }
 
-        /** The arm's link shapes seen from the side at the state's joints. */
-        ArmPose armPose(const ManipulationStateSpace &space, const ompl::base::State *state,
+        /** The arm's link shapes in a view at the state's joints. */
+        ArmPose armPose(View view, const ManipulationStateSpace &space, const ompl::base::State *state,
                         const std::string &caption)
         {
             const ManipulationModel &model = *space.model();
@@ -231,7 +243,7 @@ namespace ompl_mm::picture
             ArmPose pose{{}, caption};
             for (std::size_t link = 0; link < frames.size(); ++link)
                 for (const LinkShape &linkShape : model.robot().links()[link].shapes)
-                    pose.links.push_back(sideOutline(linkShape.shape, frames[link] * linkShape.origin));
+                    pose.links.push_back(viewOutline(view, linkShape.shape, frames[link] * linkShape.origin));
             return pose;
         }
 
@@ -244,13 +256,13 @@ namespace ompl_mm::picture
 
         /** The arm at the start, at every mode switch (where the segments' primitive or object
             changes) and at the end; at the start alone without a path. */
-        void addArmPoses(const ManipulationSetup &setup, const ompl::base::State *start,
+        void addArmPoses(View view, const ManipulationSetup &setup, const ompl::base::State *start,
                          const ManipulationPath *path, Picture &picture)
         {
             const ManipulationStateSpace &space = *setup.manipulationSpace();
             if (path == nullptr || path->getStateCount() == 0)
             {
-                picture.armPoses.push_back(armPose(space, start, "start"));
+                picture.armPoses.push_back(armPose(view, space, start, "start"));
                 return;
             }
             const std::vector<SegmentLabel> &labels = path->labels();
@@ -263,7 +275,7 @@ namespace ompl_mm::picture
                 const std::string then =
                     i < labels.size() ? segmentName(space.model()->scene(), labels[i]) : "end";
                 picture.armPoses.push_back(
-                    armPose(space, path->getState(i), "waypoint " + std::to_string(i) + ": " + then));
+                    armPose(view, space, path->getState(i), "waypoint " + std::to_string(i) + ": " + then));
             }
         }
 
@@ -405,7 +417,8 @@ namespace ompl_mm::picture
         return Eigen::AlignedBox2d(box.center() - half - margin, box.center() + half + margin);
     }
 
-    /** The view from above: ground, objects, goals, tool course and a mobile robot. */
+    /** The view from above: ground, objects, goals, tool course, and a mobile robot's disc or an
+        arm's links. */
     Picture topPicture(const ManipulationSetup &setup, const ManipulationPath *path)
     {
         Picture picture = pathPicture(setup, path, View::Top);
@@ -416,7 +429,15 @@ namespace ompl_mm::picture
         picture.robotStart = robotFootprint(space, start);
         if (path != nullptr && path->getStateCount() > 0)
             picture.robotEnd = robotFootprint(space, path->getState(path->getStateCount() - 1));
+        // an arm seen from above: its links' footprints, as in the side view
+        if (!space.model()->robot().allJointsPrismatic())
+            addArmPoses(View::Top, setup, start, path, picture);
         return picture;
+    }
+
+    bool isFloorSlab(const Scene &scene, const Obstacle &obstacle)
+    {
+        return underLowestSurface(obstacle, lowestSurfaceKey(scene));
     }
 
     /** The view from the side: ground, objects, the arm at its mode switches, tool course and
@@ -425,7 +446,7 @@ namespace ompl_mm::picture
     {
         Picture picture = pathPicture(setup, path, View::Side);
         addSideGround(setup.model()->scene(), picture);
-        addArmPoses(setup, setup.getProblemDefinition()->getStartState(0), path, picture);
+        addArmPoses(View::Side, setup, setup.getProblemDefinition()->getStartState(0), path, picture);
         if (path != nullptr && path->getStateCount() > 0)
             addCarried(setup, *path, View::Side, picture);
         return picture;

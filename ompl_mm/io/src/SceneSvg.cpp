@@ -4,6 +4,7 @@
 
 #include "ompl_core/io/SvgCanvas.h"
 #include "ompl_core/io/TextFormat.h"
+#include "ompl_mm/io/LabelLayout.h"
 #include "ompl_mm/io/PlanColours.h"
 
 #include <ompl/base/ScopedState.h>
@@ -173,44 +174,74 @@ namespace ompl_mm
                 << "</g><g stroke=\"" << colour << "\" stroke-width=\"2\">" << shape << "</g></g>\n";
         }
 
-        /** Where a footprint's label goes: just above it, so the path and arrows inside stay visible. */
-        Eigen::Vector2d labelAnchor(const ompl_core::SvgCanvas &canvas, const Footprint &f)
+        /** Font size of the labels, pixels. */
+        constexpr double LABEL_FONT = 12.0;
+        /** Half the size of a goal symbol, pixels. */
+        constexpr double GOAL_SYMBOL_HALF = 10.0;
+
+        /** A footprint's pixel box. */
+        Eigen::AlignedBox2d pixelBox(const ompl_core::SvgCanvas &canvas, const Footprint &f)
         {
-            double halfHeight = f.radius;
+            Eigen::AlignedBox2d box;
+            const Eigen::Vector2d reach = Eigen::Vector2d::Constant(f.radius * canvas.scale());
+            box.extend(canvas.map(f.centre) - reach).extend(canvas.map(f.centre) + reach);
             for (const Eigen::Vector2d &corner : f.corners)
-                halfHeight = std::max(halfHeight, std::abs(corner.y() - f.centre.y()));
-            return canvas.map(f.centre) - Eigen::Vector2d(0.0, halfHeight * canvas.scale() + 5.0);
+                box.extend(canvas.map(corner));
+            return box;
         }
 
+        /** The goals' symbols, then the labels, placed by a LabelLayout inside area (pixels) so that
+            none covers another or a goal symbol: the goals' names under their symbols, the
+            objects' names over them where they end, then where they start (when they moved), then
+            the mobile robot's; a label with no free place nearby is left out. */
         void writeLabels(std::ostream &out, const ompl_core::SvgCanvas &canvas, const Scene &scene,
-                         const Picture &picture)
+                         const Picture &picture, const Eigen::AlignedBox2d &area)
         {
             const std::string style =
                 "class=\"label\" font-size=\"12\" text-anchor=\"middle\" stroke=\"white\" stroke-width=\"3\" "
                 "paint-order=\"stroke\" fill=\"black\"";
+            LabelLayout layout(area, LABEL_FONT);
+            const Eigen::Vector2d symbolHalf = Eigen::Vector2d::Constant(GOAL_SYMBOL_HALF);
             for (const GoalMarker &goal : picture.goals)
             {
                 writeGoalSymbol(out, canvas.map(goal.at), goal.colour, "goal");
-                ompl_core::SvgCanvas::writeText(out, canvas.map(goal.at) + Eigen::Vector2d(0.0, 24.0),
-                                                goal.label, style);
+                layout.keepFree(
+                    Eigen::AlignedBox2d(canvas.map(goal.at) - symbolHalf, canvas.map(goal.at) + symbolHalf));
             }
-            // an object that moved is named at both places, unless the two names would overlap
+            const auto label =
+                [&](const std::string &text, const Eigen::AlignedBox2d &target, LabelLayout::Side side)
+            {
+                if (const std::optional<Eigen::Vector2d> at = layout.place(text, target, side))
+                    ompl_core::SvgCanvas::writeText(out, *at, text, style);
+            };
+            for (const GoalMarker &goal : picture.goals)
+                label(goal.label,
+                      Eigen::AlignedBox2d(canvas.map(goal.at) - symbolHalf, canvas.map(goal.at) + symbolHalf),
+                      LabelLayout::Side::Below);
+            for (std::size_t i = 0; i < picture.objectEnd.size(); ++i)
+                label(scene.objects[i].name, pixelBox(canvas, picture.objectEnd[i]),
+                      LabelLayout::Side::Above);
             for (std::size_t i = 0; i < picture.objectStart.size(); ++i)
             {
-                const Eigen::Vector2d start = labelAnchor(canvas, picture.objectStart[i]);
-                bool nameStart = true;
-                if (i < picture.objectEnd.size())
-                {
-                    const Eigen::Vector2d end = labelAnchor(canvas, picture.objectEnd[i]);
-                    ompl_core::SvgCanvas::writeText(out, end, scene.objects[i].name, style);
-                    nameStart = std::abs(end.x() - start.x()) > 40.0 || std::abs(end.y() - start.y()) > 14.0;
-                }
-                if (nameStart)
-                    ompl_core::SvgCanvas::writeText(out, start, scene.objects[i].name, style);
+                // an object that stayed where it was is named once
+                const bool moved =
+                    i >= picture.objectEnd.size() ||
+                    (canvas.map(picture.objectEnd[i].centre) - canvas.map(picture.objectStart[i].centre))
+                            .norm() > 1.0;
+                if (moved)
+                    label(scene.objects[i].name, pixelBox(canvas, picture.objectStart[i]),
+                          LabelLayout::Side::Above);
             }
             if (picture.robotStart)
-                ompl_core::SvgCanvas::writeText(out, labelAnchor(canvas, *picture.robotStart), "robot",
-                                                style);
+                label("robot", pixelBox(canvas, *picture.robotStart), LabelLayout::Side::Above);
+        }
+
+        /** The drawing band of a canvas, between its title and legend strips, pixels. */
+        Eigen::AlignedBox2d drawingBand(const ompl_core::SvgCanvas &canvas)
+        {
+            return Eigen::AlignedBox2d(
+                Eigen::Vector2d(0.0, canvas.layout().titlePx),
+                Eigen::Vector2d(canvas.width(), canvas.height() - canvas.layout().legendPx));
         }
 
         /** Largest power of ten at most a quarter of the width (1 m for room-sized scenes). */
@@ -322,7 +353,7 @@ namespace ompl_mm
             const ompl_core::SvgCanvas canvas(padded(bounds(top)), LAYOUT);
             canvas.writeHeader(out, arrowDefs());
             writeView(out, canvas, scene, top);
-            writeLabels(out, canvas, scene, top);
+            writeLabels(out, canvas, scene, top, drawingBand(canvas));
             writeTitle(out, scene, path);
             writeCaptionAndScale(out, canvas, "", TITLE_Y);
             writeLegend(out, canvas);
@@ -355,7 +386,7 @@ namespace ompl_mm
             whole.writeHeader(out, arrowDefs());
             out << "<g class=\"top-view\">\n";
             writeView(out, topCanvas, scene, top);
-            writeLabels(out, topCanvas, scene, top);
+            writeLabels(out, topCanvas, scene, top, drawingBand(topCanvas));
             writeCaptionAndScale(out, topCanvas, "top view (x\u2013y)", CAPTION_Y);
             out << "</g>\n<g class=\"side-view\" transform=\"translate("
                 << ompl_core::SvgCanvas::number(topCanvas.width()) << ",0)\">\n";

@@ -2,6 +2,7 @@
 
 #include "ompl_core/io/TextFormat.h"
 #include "ompl_mm/base/ManipulationValidityChecker.h"
+#include "ompl_mm/base/StepTermination.h"
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 
 #include <ompl/base/PlannerData.h>
@@ -13,6 +14,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 
 namespace ob = ompl::base;
 
@@ -180,8 +183,10 @@ namespace ompl_mm
             throw ompl::Exception(getName(), "has no primitives: call setPrimitives() first");
         checkParameters();
         esp_ = std::make_unique<EmptySpacePlanner>(space_, primitives_);
-        motions_ = std::make_unique<ManipulationMotionValidator>(si_, primitives_);
-        simplifier_ = std::make_unique<ManipulationSimplifier>(si_);
+        simplifier_ = std::make_unique<ManipulationSimplifier>(si_);  // throws without the validator
+        // the space information's own validator, so that the sweeps the walks found free are
+        // remembered for the path's re-check
+        motions_ = std::dynamic_pointer_cast<ManipulationMotionValidator>(si_->getMotionValidator());
         startTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), true);
         goalTree_ = std::make_unique<ManipulationTree>(space_, metric_.get(), false);
         pickup_ = nullptr;
@@ -232,6 +237,8 @@ namespace ompl_mm
             goalTree_->clear();
         sampler_.reset();
         statistics_ = MOPLStatistics();
+        if (esp_)
+            esp_->tally().clear();
         ikTimeAtClear_ = ikTimeSoFar();
     }
 
@@ -298,15 +305,16 @@ namespace ompl_mm
         return index;
     }
 
-    MOPL::Extension MOPL::extend(ManipulationTree &tree, int near, const ob::State *target)
+    MOPL::Extension MOPL::extend(ManipulationTree &tree, int near, const ob::State *target,
+                                 const ob::PlannerTerminationCondition &ptc)
     {
         Trajectory trajectory(space_);
         EmptySpacePlanner::Outcome outcome;
         {
             ScopedTimer timer(statistics_.propagateTime);
             // the backward tree needs a motion that ends exactly at its vertex
-            outcome = tree.forward() ? esp_->plan(tree.vertex(near).state, target, trajectory, rng_)
-                                     : esp_->plan(target, tree.vertex(near).state, trajectory, rng_);
+            outcome = tree.forward() ? esp_->plan(tree.vertex(near).state, target, trajectory, rng_, ptc)
+                                     : esp_->plan(target, tree.vertex(near).state, trajectory, rng_, ptc);
         }
         if (outcome == EmptySpacePlanner::Outcome::AlreadyThere)
             return {near, true};
@@ -314,12 +322,13 @@ namespace ompl_mm
             (!tree.forward() && outcome != EmptySpacePlanner::Outcome::Reached))
             return {};
         ScopedTimer timer(statistics_.connectTime);
-        Extension extension = walk(tree, near, trajectory);
+        Extension extension = walk(tree, near, trajectory, ptc);
         extension.reached = extension.reached && outcome == EmptySpacePlanner::Outcome::Reached;
         return extension;
     }
 
-    MOPL::Extension MOPL::walk(ManipulationTree &tree, int near, const Trajectory &trajectory)
+    MOPL::Extension MOPL::walk(ManipulationTree &tree, int near, const Trajectory &trajectory,
+                               const ob::PlannerTerminationCondition &ptc)
     {
         // walk away from the tree: forward along the trajectory, or backward from its end, a vertex
         // at least every vertex step and at every waypoint (mode switches happen there)
@@ -349,7 +358,11 @@ namespace ompl_mm
                     space_->copyState(to, end);
                 else
                     space_->interpolate(start, end, k * vertexStep_ / length, to);
-                const CollisionWorld::SweepCheck check = motions_->checkSweep(from, to);
+                // a check stopped by ptc reports nothing of the piece free: the walk ends here
+                const CollisionWorld::SweepCheck check = motions_->checkSweep(from, to, ptc);
+                if (!check.interrupted)
+                    esp_->tally().motion(blamedKind(trajectory, i), label.kind, check.free, check.contact[0],
+                                         check.contact[1]);
                 blocked = !check.free || !si_->isValid(to);
                 if (blocked && check.free)
                     break;  // the piece's end breaks a rule other than collision: stay
@@ -372,7 +385,18 @@ namespace ompl_mm
         return extension;
     }
 
-    MOPL::Extension MOPL::clearWay(ManipulationTree &tree, int from, unsigned int object, ob::State *target)
+    PrimitiveKind MOPL::blamedKind(const Trajectory &trajectory, std::size_t segment)
+    {
+        // a transit that leads to another primitive is that primitive's approach (a pickup's to
+        // its approach pose): its contacts are what keeps that primitive from acting
+        for (std::size_t k = segment; k + 1 < trajectory.size(); ++k)
+            if (trajectory.label(k).kind != PrimitiveKind::Transit)
+                return trajectory.label(k).kind;
+        return PrimitiveKind::Transit;
+    }
+
+    MOPL::Extension MOPL::clearWay(ManipulationTree &tree, int from, unsigned int object, ob::State *target,
+                                   const ob::PlannerTerminationCondition &ptc)
     {
         space_->copyState(target, tree.vertex(from).state);
         ObjectPose pose = space_->objectPose(target, object);
@@ -394,23 +418,24 @@ namespace ompl_mm
             pose.position.x() = x;
             pose.position.y() = y;
             space_->setObjectPose(target, object, pose);
-            return extend(tree, from, target);
+            return extend(tree, from, target, ptc);
         }
         return {};
     }
 
     MOPL::Extension MOPL::clearAndRetry(ManipulationTree &tree, int near, const Extension &stopped,
-                                        const ob::State *target, ob::State *scratch)
+                                        const ob::State *target, ob::State *scratch,
+                                        const ob::PlannerTerminationCondition &ptc)
     {
         ++statistics_.clearings;
         const int from = stopped.last >= 0 ? stopped.last : near;
         const Extension cleared =
-            clearWay(tree, from, static_cast<unsigned int>(stopped.blockingObject), scratch);
+            clearWay(tree, from, static_cast<unsigned int>(stopped.blockingObject), scratch, ptc);
         if (cleared.last < 0 || cleared.last == from)
             return stopped;
         if (!cleared.reached)
             return cleared;
-        const Extension retried = extend(tree, cleared.last, target);
+        const Extension retried = extend(tree, cleared.last, target, ptc);
         return retried.last >= 0 && retried.last != cleared.last ? retried : cleared;
     }
 
@@ -477,8 +502,13 @@ namespace ompl_mm
         // restarts cut the heavy tail of the search time; each run may last twice as long as the last
         std::uint64_t allowance = restartIterations_;
         std::uint64_t runStart = statistics_.iterations;
+        // ptc once per iteration, as OMPL's planners poll it (a condition may count iterations);
+        // within the iteration's steps a view of it that asks again only when a step takes long
+        StepTermination step(ptc);
+        const ob::PlannerTerminationCondition &inner = step.condition();
         while (!ptc)
         {
+            step.startStep();
             if (restartIterations_ > 0 && statistics_.iterations - runStart >= allowance)
             {
                 restart();
@@ -506,10 +536,10 @@ namespace ompl_mm
                     a.removeLast();
                 continue;
             }
-            Extension grown = extend(a, near, sample.state());
+            Extension grown = extend(a, near, sample.state(), inner);
             // an object stopped the start tree: push it aside, then go on
             if (clears && a.forward() && grown.blockingObject >= 0 && rng_.uniform01() < clearProbability_)
-                grown = clearAndRetry(a, near, grown, sample.state(), clearing.state());
+                grown = clearAndRetry(a, near, grown, sample.state(), clearing.state(), inner);
             if (grown.last < 0 || grown.last == near)
             {
                 if (newRoot)
@@ -529,7 +559,7 @@ namespace ompl_mm
             const int nearB = nearest(b, connectTarget, &newRoot);
             if (nearB < 0)
                 continue;
-            const Extension joined = extend(b, nearB, connectTarget.state());
+            const Extension joined = extend(b, nearB, connectTarget.state(), inner);
             if (newRoot && !joined.reached && (joined.last < 0 || joined.last == nearB))
                 b.removeLast();
             if (joined.reached)
@@ -546,7 +576,16 @@ namespace ompl_mm
         OMPL_INFORM("%s: no solution after %llu iterations (%zu + %zu vertices)", getName().c_str(),
                     static_cast<unsigned long long>(statistics_.iterations), startTree_->size(),
                     goalTree_->size());
+        std::istringstream never(esp_->tally().failureSummary());
+        for (std::string line; std::getline(never, line);)
+            OMPL_WARN("%s: %s", getName().c_str(), line.c_str());
         return ob::PlannerStatus::TIMEOUT;
+    }
+
+    const PrimitiveTally &MOPL::primitiveTally() const
+    {
+        static const PrimitiveTally NONE;
+        return esp_ ? esp_->tally() : NONE;
     }
 
     void MOPL::addSolution(int f, int g, const ob::PlannerTerminationCondition &ptc)

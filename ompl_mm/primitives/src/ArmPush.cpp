@@ -100,7 +100,8 @@ namespace ompl_mm
 
     bool ArmPush::solvePush(const ompl::base::State *from, unsigned int object, const ObjectPose &start,
                             const ObjectPose &end, const Eigen::Vector2d &direction,
-                            ompl::base::State *scratch, Grasping::Solution &joints) const
+                            ompl::base::State *scratch, Grasping::Solution &joints,
+                            const ompl::base::PlannerTerminationCondition &ptc) const
     {
         const Eigen::Vector3d up(0.0, 0.0, settings_.approachDistance);
         const Eigen::Vector3d back(-settings_.approachDistance * direction.x(),
@@ -118,7 +119,7 @@ namespace ompl_mm
             [&](Grasping::Solution &s)
             {
                 if (!arm_->solveToolPose(pushPose(object, start, direction), s[0].data()) ||
-                    !acceptableAt(s[0], start))
+                    !acceptableAt(s[0], start) || ptc)
                     return false;
                 s.resize(4, s[0]);
                 if (!arm_->solveShortMove(up, none, s[1].data()) || !acceptableAt(s[1], start) ||
@@ -128,11 +129,18 @@ namespace ompl_mm
                     return false;
                 s[3] = s[2];
                 return arm_->solveShortMove(back, none, s[3].data()) && acceptableAt(s[3], end);
-            });
+            },
+            ptc);
     }
 
     bool ArmPush::propagate(const ompl::base::State *from, const ompl::base::State *to,
                             Trajectory &trajectory) const
+    {
+        return propagate(from, to, trajectory, ompl::base::plannerNonTerminatingCondition());
+    }
+
+    bool ArmPush::propagate(const ompl::base::State *from, const ompl::base::State *to,
+                            Trajectory &trajectory, const ompl::base::PlannerTerminationCondition &ptc) const
     {
         const int object = nearestSlidingObject(from, to);
         if (object < 0)
@@ -144,7 +152,7 @@ namespace ompl_mm
         end.position.head<2>() += std::min(offset.norm(), settings_.maxPushDistance) * direction;
         ompl::base::State *waypoint = space_->cloneState(from);
         Grasping::Solution joints;
-        if (!solvePush(from, object, start, end, direction, waypoint, joints))
+        if (!solvePush(from, object, start, end, direction, waypoint, joints, ptc))
         {
             space_->freeState(waypoint);
             return false;

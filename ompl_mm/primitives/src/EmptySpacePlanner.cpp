@@ -16,7 +16,8 @@ namespace ompl_mm
 
     EmptySpacePlanner::Outcome EmptySpacePlanner::plan(const ompl::base::State *from,
                                                        const ompl::base::State *to, Trajectory &trajectory,
-                                                       ompl::RNG &rng)
+                                                       ompl::RNG &rng,
+                                                       const ompl::base::PlannerTerminationCondition &ptc)
     {
         trajectory.reset(from);
         if (space_->equalStates(from, to))
@@ -29,7 +30,7 @@ namespace ompl_mm
 
         unsigned int steps = 0;
         bool useful = true;
-        while (useful && steps < MAX_STEPS)
+        while (useful && steps < MAX_STEPS && !ptc)
         {
             useful = false;
             for (std::size_t index : order_)
@@ -37,9 +38,13 @@ namespace ompl_mm
                 const Primitive &primitive = *primitives_[index];
                 if (failed_[index] || !primitive.isUseful(trajectory.back(), to))
                     continue;
+                if (ptc)
+                    break;  // out of time: what was found so far
                 useful = true;
                 ++steps;
-                if (primitive.propagate(trajectory.back(), to, trajectory))
+                const bool found = primitive.propagate(trajectory.back(), to, trajectory, ptc);
+                tally_.attempt(primitive.kind(), found, found ? "" : primitive.takeRejection());
+                if (found)
                     std::fill(failed_.begin(), failed_.end(), 0);
                 else
                     failed_[index] = 1;

@@ -1,5 +1,6 @@
 #include "ompl_mm/primitives/Grasping.h"
 
+#include "ompl_mm/collision/ConvexDistance.h"
 #include "ompl_mm/robot/IkSolver.h"
 
 #include <ompl/util/Exception.h>
@@ -29,6 +30,76 @@ namespace ompl_mm
         const KinematicChain &chain = solvedChain(model, settings_.tool);
         const Eigen::Isometry3d &base = model.scene().robot.basePose;
         ik_ = factory ? factory(chain, base) : std::make_unique<IkSolver>(chain, base);
+        if (settings_.depth && !(*settings_.depth >= 0.0))
+            throw ompl::Exception("the grasp depth must be at least 0, got " +
+                                  std::to_string(*settings_.depth));
+        handReach_ = measureHandReach();
+    }
+
+    double Grasping::measureHandReach() const
+    {
+        const ManipulationModel &model = *space_->model();
+        const RobotModel &robot = model.robot();
+        // the links rigid with the tool link: joined to it through fixed joints only
+        const auto rigidWithTool = [&robot, tool = model.toolLink()](int link)
+        {
+            const auto fixedPath = [&robot](int from, int ancestor)
+            {
+                for (int l = from; l != ancestor; l = robot.links()[l].parent)
+                    if (robot.joints()[robot.links()[l].joint].type != Joint::Type::Fixed)
+                        return false;
+                return true;
+            };
+            for (int top = tool;; top = robot.links()[top].parent)
+            {
+                if (robot.isInSubtree(link, top))
+                    return fixedPath(link, top);
+                if (robot.links()[top].parent < 0 ||
+                    robot.joints()[robot.links()[top].joint].type != Joint::Type::Fixed)
+                    return false;
+            }
+        };
+        const std::vector<double> zero(robot.dof(), 0.0);
+        std::vector<Eigen::Isometry3d> frames;
+        robot.forwardKinematics(zero.data(), model.scene().robot.basePose, frames);
+        const Eigen::Isometry3d tool = model.toolFrame(zero.data());
+        std::vector<std::pair<ConvexShape, Eigen::Isometry3d>> hand;
+        for (std::size_t l = 0; l < robot.links().size(); ++l)
+            if (rigidWithTool(static_cast<int>(l)))
+                for (const LinkShape &s : robot.links()[l].shapes)
+                    try
+                    {
+                        if (auto convex = ConvexShape::of(s.shape, MeshCollision::ConvexHull))
+                            hand.emplace_back(*convex, frames[l] * s.origin);
+                    }
+                    catch (const ompl::Exception &)
+                    {
+                        // a flat mesh (no hull) has no inside to run into
+                    }
+        // millimetre steps back along the approach axis until a point lies inside a shape
+        const ConvexShape point = ConvexShape::sphere(1e-4);
+        for (double back = 0.0; back <= MAX_HAND_REACH; back += 1e-3)
+        {
+            const Eigen::Isometry3d at = tool * Eigen::Translation3d(0.0, 0.0, -back);
+            for (const auto &[shape, frame] : hand)
+                if (convexDistance(point, at, shape, frame, 1e-6) <= 0.0)
+                    return back;
+        }
+        return std::numeric_limits<double>::infinity();
+    }
+
+    double Grasping::graspHeight(unsigned int object) const
+    {
+        const Shape &shape = space_->model()->scene().objects[object].shape;
+        const double height = shape.height();
+        if (settings_.depth)
+            return std::max(0.0, height - *settings_.depth);
+        // the hand's first shape lies handReach back along the tilted approach axis: beside the
+        // object (a side grasp) it takes nothing from the grasp; above it, it must clear the top
+        if (!std::isfinite(handReach_) ||
+            handReach_ * std::sin(std::abs(settings_.tilt)) >= shape.footprintRadius() + HAND_MARGIN)
+            return 0.5 * height;
+        return std::max(0.5 * height, height + HAND_MARGIN - handReach_ * std::cos(settings_.tilt));
     }
 
     Eigen::Isometry3d Grasping::solvedInTool(const double *q) const
@@ -48,9 +119,8 @@ namespace ompl_mm
 
     bool Grasping::solveGrasp(unsigned int object, const ObjectPose &pose, double *q)
     {
-        const Shape &shape = space_->model()->scene().objects[object].shape;
         Eigen::Isometry3d tool = Eigen::Isometry3d::Identity();
-        tool.translate(pose.position + Eigen::Vector3d(0.0, 0.0, 0.5 * shape.height()));
+        tool.translate(pose.position + Eigen::Vector3d(0.0, 0.0, graspHeight(object)));
         // the approach axis (tool z) down, tilted about the axis between the fingers (tool x)
         tool.rotate(Eigen::AngleAxisd(M_PI + settings_.tilt, Eigen::Vector3d::UnitX()));
         return solve(tool * solvedInTool(q), IkTask::Pose5DFreeYaw, q);
@@ -65,12 +135,13 @@ namespace ompl_mm
     }
 
     bool Grasping::nearestSolution(const double *start, std::size_t compared, Solution &best,
-                                   const std::function<bool(Solution &)> &solve)
+                                   const std::function<bool(Solution &)> &solve,
+                                   const ompl::base::PlannerTerminationCondition &ptc)
     {
         Solution trial;
         unsigned int found = 0;
         double nearest = std::numeric_limits<double>::infinity();
-        for (unsigned int attempt = 0; attempt < ATTEMPTS && found < CANDIDATES; ++attempt)
+        for (unsigned int attempt = 0; attempt < ATTEMPTS && found < CANDIDATES && !ptc; ++attempt)
         {
             trial.resize(1);
             trial[0].assign(start, start + work_.size());

@@ -1,5 +1,6 @@
 #include "ompl_mm/primitives/Pickup.h"
 
+#include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
 
 #include <cmath>
@@ -18,6 +19,11 @@ namespace ompl_mm
         if (!(settings_.minPlaneDistance >= 0.0))
             throw ompl::Exception("pickup min_plane_distance must be at least 0, got " +
                                   std::to_string(settings_.minPlaneDistance));
+        if (!grasping_->settings().depth)
+            OMPL_INFORM(
+                "pickup: the hand begins %.4g m behind the tool point along its approach axis; grasps "
+                "keep it %.4g m above an object's top (grasp_depth sets the depth instead)",
+                grasping_->handReach(), Grasping::HAND_MARGIN);
     }
 
     bool Pickup::mustRise(const ompl::base::State *from, const ompl::base::State *to,
@@ -45,6 +51,12 @@ namespace ompl_mm
     bool Pickup::propagate(const ompl::base::State *from, const ompl::base::State *to,
                            Trajectory &trajectory) const
     {
+        return propagate(from, to, trajectory, ompl::base::plannerNonTerminatingCondition());
+    }
+
+    bool Pickup::propagate(const ompl::base::State *from, const ompl::base::State *to, Trajectory &trajectory,
+                           const ompl::base::PlannerTerminationCondition &ptc) const
+    {
         const int object = nearestToTool(from, [&](unsigned int i) { return mustRise(from, to, i); });
         if (object < 0)
             return false;
@@ -58,13 +70,14 @@ namespace ompl_mm
             start, 1, joints,
             [&](Grasping::Solution &s)
             {
-                if (!grasping_->solveGrasp(object, pose, s[0].data()))
+                if (!grasping_->solveGrasp(object, pose, s[0].data()) || ptc)
                     return false;
                 s.resize(3, s[0]);
                 return grasping_->solveShortMove(none, {0.0, 0.0, -grasping_->settings().approachDistance},
                                                  s[1].data()) &&
                        grasping_->solveShortMove({0.0, 0.0, settings_.liftHeight}, none, s[2].data());
-            });
+            },
+            ptc);
         if (!found)
             return false;
         const std::vector<double> &graspJoints = joints[0];

@@ -1,5 +1,7 @@
 #include "ompl_mm/primitives/Primitive.h"
 
+#include "ompl_mm/base/ManipulationValidityChecker.h"
+
 #include <cmath>
 #include <limits>
 
@@ -8,6 +10,18 @@ namespace ompl_mm
     Primitive::Primitive(const ManipulationStateSpace *space, std::string name, PrimitiveKind kind)
         : space_(space), name_(std::move(name)), kind_(kind)
     {
+    }
+
+    bool Primitive::acceptable(const ompl::base::State *state) const
+    {
+        if (!checker_ || checker_->isValid(state))
+            return true;
+        // the words of a manipulation checker, which names the bodies; a generic one's verdict
+        const auto *manipulation = dynamic_cast<const ManipulationValidityChecker *>(checker_.get());
+        rejection_ =
+            "a pose it needs is invalid: " +
+            (manipulation ? manipulation->explain(state) : std::string("the state validity checker says so"));
+        return false;
     }
 
     bool Primitive::allObjectsRest(const ompl::base::State *state) const

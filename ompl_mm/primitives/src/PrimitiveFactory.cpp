@@ -17,14 +17,16 @@ namespace ompl_mm
     namespace
     {
         /** Inverse kinematics of a grasping primitive: the factory's solver, or an IkSolver with
-            the primitive's budget (ik_iterations, ik_restarts). */
+            the primitive's budget (ik_iterations, ik_restarts); its grasp depth (pickup's). */
         std::shared_ptr<Grasping> makeGrasping(const ManipulationStateSpace *space,
-                                               const PrimitiveParameters &params, double tilt)
+                                               const PrimitiveParameters &params, double tilt,
+                                               std::optional<double> depth = std::nullopt)
         {
             Grasping::Settings settings;
             settings.tool = params.text("tool", "");
             settings.tilt = tilt;
             settings.approachDistance = params.number("approach_distance", settings.approachDistance);
+            settings.depth = depth;
             const unsigned int iterations = params.count("ik_iterations", 20, 1, 10000);
             const unsigned int restarts = params.count("ik_restarts", 20, 0, 100000);
             const bool anyYaw = params.flag("ik_any_yaw", false);
@@ -179,16 +181,18 @@ namespace ompl_mm
         registerType("push_interior", armPush("push_interior", hand(0.0, 65.0, 0.0)));
         registerType("push_exterior", armPush("push_exterior", hand(0.0, 65.0, 180.0)));
         registerType("push_frontal", armPush("push_frontal", hand(30.0, 0.0, 0.0)));
-        registerType("pickup",
-                     [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
-                     {
-                         Pickup::Settings settings;
-                         settings.liftHeight = params.number("lift_height", settings.liftHeight);
-                         settings.minPlaneDistance =
-                             params.number("min_plane_distance", settings.minPlaneDistance);
-                         return std::make_shared<Pickup>(
-                             space, makeGrasping(space, params, params.angle("grasp_tilt", 0.0)), settings);
-                     });
+        registerType(
+            "pickup",
+            [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
+            {
+                Pickup::Settings settings;
+                settings.liftHeight = params.number("lift_height", settings.liftHeight);
+                settings.minPlaneDistance = params.number("min_plane_distance", settings.minPlaneDistance);
+                return std::make_shared<Pickup>(space,
+                                                makeGrasping(space, params, params.angle("grasp_tilt", 0.0),
+                                                             params.optionalNumber("grasp_depth")),
+                                                settings);
+            });
         registerType("transfer_rigid",
                      [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
                      {

@@ -40,6 +40,13 @@ namespace ompl_mm
     bool TransferRigid::propagate(const ompl::base::State *from, const ompl::base::State *to,
                                   Trajectory &trajectory) const
     {
+        return propagate(from, to, trajectory, ompl::base::plannerNonTerminatingCondition());
+    }
+
+    bool TransferRigid::propagate(const ompl::base::State *from, const ompl::base::State *to,
+                                  Trajectory &trajectory,
+                                  const ompl::base::PlannerTerminationCondition &ptc) const
+    {
         const int object = heldObject(from);
         if (object < 0)
             return false;
@@ -55,10 +62,12 @@ namespace ompl_mm
         if (places)
         {
             // a place the tool can retreat from along its axis, near the robot's joints
-            if (!grasping_->nearestSolution(start, 0, joints,
-                                            [&](Grasping::Solution &s) {
-                                                return solvePlace(grasp, {target.position, held.yaw}, s);
-                                            }))
+            if (!grasping_->nearestSolution(
+                    start, 0, joints,
+                    [&](Grasping::Solution &s) {
+                        return solvePlace(grasp, {target.position, held.yaw}, s, ptc);
+                    },
+                    ptc))
                 return false;
             placeJoints = joints[0];
         }
@@ -95,7 +104,8 @@ namespace ompl_mm
     }
 
     bool TransferRigid::solvePlace(const Eigen::Isometry3d &grasp, const ObjectPose &place,
-                                   Grasping::Solution &solution) const
+                                   Grasping::Solution &solution,
+                                   const ompl::base::PlannerTerminationCondition &ptc) const
     {
         const Eigen::Vector3d none = Eigen::Vector3d::Zero();
         std::vector<double> above;
@@ -111,6 +121,8 @@ namespace ompl_mm
         }
         else if (!grasping_->solveCarry(grasp, place, solution[0].data()))
             return false;
+        if (ptc)
+            return false;  // out of time: the short moves would only cost more
         solution.resize(2, solution[0]);
         if (!above.empty())
             solution.push_back(std::move(above));

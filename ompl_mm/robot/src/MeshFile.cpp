@@ -79,13 +79,19 @@ namespace ompl_mm
         return "";
     }
 
-    std::shared_ptr<const TriangleMesh> readMeshFile(const std::string &path, const Eigen::Vector3d &scale,
-                                                     MeshCache &cache)
+    std::string meshCacheKey(const std::string &path, const Eigen::Vector3d &scale)
     {
         std::ostringstream key;
         key.precision(17);
         key << path << '|' << scale.x() << ' ' << scale.y() << ' ' << scale.z();
-        if (const auto cached = cache.find(key.str()); cached != cache.end())
+        return key.str();
+    }
+
+    std::shared_ptr<const TriangleMesh> readMeshFile(const std::string &path, const Eigen::Vector3d &scale,
+                                                     MeshCache &cache)
+    {
+        const std::string key = meshCacheKey(path, scale);
+        if (const auto cached = cache.find(key); cached != cache.end())
             return cached->second;
 
         Assimp::Importer importer;
@@ -115,7 +121,7 @@ namespace ompl_mm
         if (mesh->triangles.empty())
             throw std::runtime_error("the file holds no triangle");
         mesh->measure();
-        cache.emplace(key.str(), mesh);
+        cache.emplace(key, mesh);
         return mesh;
     }
 }  // namespace ompl_mm

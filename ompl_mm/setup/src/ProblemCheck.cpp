@@ -133,11 +133,19 @@ namespace ompl_mm
             std::vector<std::string> names;
             for (const PrimitivePtr &primitive : primitives)
                 names.push_back(primitive->name());
+            // what the primitives found wrong, so that the fix can be found (a grasp the hand cannot
+            // reach, a push pose in collision)
+            std::string why;
+            for (const auto &[kind, record] : planner.tally().records())
+                if (record.noMotion > 0)
+                    why += "; " + kind + ": " + std::to_string(record.noMotion) + " of " +
+                           std::to_string(record.attempts) + " attempts " + record.mainReason().first + " (" +
+                           std::to_string(record.mainReason().second) + " times)";
             throw ompl_core::InputError(unreachable->where,
                                         "the goal cannot be reached: object '" + unreachable->object +
                                             "' must move to its goal but no primitive of the "
                                             "scene can move it there (primitives: " +
-                                            ompl_core::joinedNames(names) + ")");
+                                            ompl_core::joinedNames(names) + why + ")");
         }
     }
 }  // namespace ompl_mm

@@ -1,7 +1,8 @@
 // Tests for writePlanViewerPage, threeJsFolder and requireThreeJs: the page inlines three.js, its
 // OrbitControls and the viewer; the title and legend are HTML-escaped; the plan data is JSON with
 // numbers to 0.1 mm and 1e-5 of a quaternion, and nothing in it can end its <script> element; a
-// missing three.js is an InputError that names the file and the package.
+// missing three.js is an InputError that names the file and the package; shared meshes are written
+// once, in whole tenths of a millimetre, and solids may have colours of their own.
 #include "ompl_core/io/PlanViewer.h"
 
 #include "common/InputErrors.h"
@@ -18,6 +19,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -384,4 +386,41 @@ TEST(PlanViewer, ScriptEndInsideALibraryIsEscaped)
     const std::string html = page(smallPlan());
     EXPECT_TRUE(contains(html, "<script>var THREE = {REVISION: '0', s: '<\\/script>'};\n</script>"));
     EXPECT_TRUE(contains(html, "<script>THREE.OrbitControls = 1;\n</script>"));
+}
+
+TEST(PlanViewer, SharedMeshesAreWrittenOnceInTenthsOfAMillimetre)
+{
+    const ScopedThreeJsDir debian(DEBIAN_THREE_JS_DIR);
+    auto wedge = std::make_shared<ViewerMesh>();
+    wedge->vertices = {{0.0, 0.0, 0.0}, {0.12346, -0.00004, 0.0}, {0.0, 0.2, -1.00006}};
+    wedge->triangles = {{0, 1, 2}};
+    ViewerSolid a;
+    a.kind = ViewerSolid::Kind::Mesh;
+    a.mesh = wedge;
+    a.colour = "#404040";
+    ViewerSolid b = a;
+    b.colour.clear();
+    b.pose = Eigen::Translation3d(1.0, 0.0, 0.0);
+    ViewerPlan plan = smallPlan();
+    plan.moving.push_back({"link", "#ffffff", 1.0, {a, b}});
+    plan.goals.push_back({"goal link", "#ffffff", 0.3, {b}});
+    for (auto &frame : plan.frames)
+        frame.push_back(Eigen::Isometry3d::Identity());
+    const std::string json = planData(page(plan));
+    const boost::property_tree::ptree tree = parsed(json);
+    EXPECT_EQ(tree.get<std::string>("meshUnit"), "0.0001");
+    const auto &meshes = tree.get_child("meshes");
+    ASSERT_EQ(meshes.size(), 1u) << "three uses, one mesh";
+    // 0.12346 -> 1235 (rounded to nearest), -0.00004 -> 0, -1.00006 -> -10001
+    EXPECT_EQ(texts(at(meshes, 0).get_child("vertices")),
+              (std::vector<std::string>{"0", "0", "0", "1235", "0", "0", "0", "2000", "-10001"}));
+    EXPECT_EQ(texts(at(meshes, 0).get_child("triangles")), (std::vector<std::string>{"0", "1", "2"}));
+    const auto &solids = at(tree.get_child("moving"), 1).get_child("solids");
+    ASSERT_EQ(solids.size(), 2u);
+    EXPECT_EQ(at(solids, 0).get<std::string>("mesh"), "0");
+    EXPECT_EQ(at(solids, 0).get<std::string>("colour"), "#404040");
+    EXPECT_EQ(at(solids, 1).count("colour"), 0u) << "the body's colour";
+    EXPECT_EQ(at(at(tree.get_child("goals"), 1).get_child("solids"), 0).get<std::string>("mesh"), "0");
+    // the inline wedge of the small plan keeps its own vertices
+    EXPECT_TRUE(contains(json, "\"kind\":\"mesh\",\"vertices\":[0,0,-0.1,")) << json;
 }

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace ompl_mm;
 using namespace ompl_mm::test;
 namespace ob = ompl::base;
@@ -147,6 +149,117 @@ TEST_F(MotionValidation, CountsValidAndInvalidMotions)
     si_->checkMotion(to_, from_);
     EXPECT_EQ(validator_->getValidMotionCount(), 1u);
     EXPECT_EQ(validator_->getInvalidMotionCount(), 2u);
+}
+
+TEST_F(MotionValidation, AStoppedCheckNeverPasses)
+{
+    // a valid transit, checked once more with its termination condition over: not free
+    ob::State *there = startCopy();
+    setRobot(space_, there, 2.2, 1.9);
+    ASSERT_TRUE(si_->checkMotion(startCopy(), there));
+    const ob::PlannerTerminationCondition ended([] { return true; });
+    const CollisionWorld::SweepCheck stopped = validator_->checkSweep(startCopy(), there, ended);
+    EXPECT_FALSE(stopped.free);
+    EXPECT_EQ(stopped.safeFraction, 0.0);
+    {
+        // for OMPL's callers, which cannot pass one: every check within the scope
+        const ManipulationMotionValidator::TerminationScope scope(*validator_, ended);
+        EXPECT_FALSE(si_->checkMotion(startCopy(), there));
+        std::pair<ob::State *, double> lastValid{newState(), -1.0};
+        EXPECT_FALSE(si_->checkMotion(startCopy(), there, lastValid));
+        EXPECT_EQ(lastValid.second, 0.0);
+        EXPECT_FALSE(validator_->checkSweep(startCopy(), there).free);
+    }
+    // once the scope ends, the checks are as before
+    EXPECT_TRUE(si_->checkMotion(startCopy(), there));
+    EXPECT_TRUE(validator_->checkSweep(startCopy(), there, ob::plannerNonTerminatingCondition()).free);
+}
+
+TEST_F(MotionValidation, ACheckStopsBetweenTheRoundsOfItsSweep)
+{
+    // the robot from its start (1.9, 1.9) straight into block3 (y 0.15..1.45): the sweep closes in
+    // over several rounds and finds the contact, with a safe fraction on the way there
+    ob::State *through = startCopy();
+    setRobot(space_, through, 1.9, 0.0);
+    unsigned int polls = 0;
+    const ob::PlannerTerminationCondition counting(
+        [&polls]
+        {
+            ++polls;
+            return false;
+        });
+    const CollisionWorld::SweepCheck full = validator_->checkSweep(startCopy(), through, counting);
+    ASSERT_FALSE(full.free);
+    ASSERT_GT(full.safeFraction, 0.0);
+    ASSERT_GE(polls, 3u) << "once before the sweep, then once per round after the first";
+    // true from its second poll on: the sweep stops after its first round, at that poll
+    polls = 0;
+    const ob::PlannerTerminationCondition secondPoll([&polls] { return ++polls >= 2; });
+    const CollisionWorld::SweepCheck stopped = validator_->checkSweep(startCopy(), through, secondPoll);
+    EXPECT_FALSE(stopped.free);
+    EXPECT_EQ(stopped.safeFraction, 0.0) << "nothing of a stopped check counts as free";
+    EXPECT_EQ(polls, 2u);
+    // and the validator is ready for the next check
+    const CollisionWorld::SweepCheck again = validator_->checkSweep(startCopy(), through);
+    EXPECT_FALSE(again.free);
+    EXPECT_EQ(again.safeFraction, full.safeFraction);
+}
+
+TEST_F(MotionValidation, AMotionFoundFreeIsNotSweptAgainButEveryOtherIs)
+{
+    // a check polls a scope's condition before it starts and a sweep at every further round:
+    // counting the polls tells whether checkMotion swept
+    unsigned int polls = 0;
+    const ob::PlannerTerminationCondition counting(
+        [&polls]
+        {
+            ++polls;
+            return false;
+        });
+    const ManipulationMotionValidator::TerminationScope scope(*validator_, counting);
+    // MOBILE BLOCKED's sweeps are quick: remember them all
+    validator_->setShortestRememberedSweep(0.0);
+    ob::State *there = startCopy();
+    setRobot(space_, there, 2.2, 1.9);
+    ASSERT_TRUE(si_->checkMotion(startCopy(), there));
+    const unsigned int swept = polls;
+    // the same motion, bit for bit: the same answer, without the sweep's rounds
+    polls = 0;
+    EXPECT_TRUE(si_->checkMotion(startCopy(), there));
+    const unsigned int remembered = polls;
+    EXPECT_LT(remembered, swept);
+    // so is the reverse motion, through the same configurations
+    polls = 0;
+    EXPECT_TRUE(si_->checkMotion(there, startCopy()));
+    EXPECT_EQ(polls, remembered);
+    // the end moved by the least amount is swept anew
+    space_.robotValues(there)[0] = std::nextafter(space_.robotValues(there)[0], 0.0);
+    polls = 0;
+    EXPECT_TRUE(si_->checkMotion(startCopy(), there));
+    EXPECT_GT(polls, remembered);
+    // a motion that collides is never remembered (checked without the probes, which would
+    // reject it before any sweep): the same rounds again
+    ob::State *through = startCopy();
+    setRobot(space_, through, 1.9, 0.0);
+    std::pair<ob::State *, double> lastValid{newState(), -1.0};
+    polls = 0;
+    EXPECT_FALSE(si_->checkMotion(startCopy(), through, lastValid));
+    const unsigned int blocked = polls;
+    EXPECT_GT(blocked, remembered);
+    polls = 0;
+    EXPECT_FALSE(si_->checkMotion(startCopy(), through, lastValid));
+    EXPECT_EQ(polls, blocked);
+    EXPECT_GT(lastValid.second, 0.0);
+    // sweeps quicker than the shortest remembered one are swept every time
+    validator_->setShortestRememberedSweep(1e9);
+    setRobot(space_, there, 2.0, 1.9);
+    polls = 0;
+    ASSERT_TRUE(si_->checkMotion(startCopy(), there));
+    const unsigned int first = polls;
+    polls = 0;
+    EXPECT_TRUE(si_->checkMotion(startCopy(), there));
+    EXPECT_EQ(polls, first);
+    EXPECT_GT(first, remembered);
 }
 
 TEST_F(MotionValidation, PathsChangedByOMPLAreRelabelledFromTheirMotions)

@@ -1,12 +1,17 @@
 // Tests for manipulationViewerPlan and writeSceneHtml on MOBILE BLOCKED: the start alone is one frame
 // at the scene's start poses; a solution (MOPL, seed 1, bounded) becomes frames at a steady tool speed
 // from the start state to the path's last state, in contiguous segments labelled and coloured by
-// primitive; the goals and every obstacle are drawn.
+// primitive; the goals and every obstacle are drawn. A Franka Panda shows its visual meshes (reduced,
+// each held once) in their colours at its link frames; surfaces stand above the tops they lie on.
 #include "ompl_mm/io/SceneHtml.h"
 
 #include "common/MobileBlocked.h"
+#include "common/PandaPick.h"
 #include "common/ViewerPlanChecks.h"
+#include "ompl_mm/io/MeshReduction.h"
+#include "ompl_mm/io/PlanColours.h"
 #include "ompl_mm/planners/MOPL.h"
+#include "ompl_mm/robot/VisualModel.h"
 
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
@@ -15,7 +20,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -290,4 +297,81 @@ TEST_F(SceneHtmlOfSolution, FixedBodiesIncludeEveryObstacle)
     }
     EXPECT_EQ(scene_->obstacles.size(), 7u);
     EXPECT_NE(ompl_core::test::bodyNamed(plan_->fixed, "floor"), nullptr) << "the support surface";
+}
+
+TEST(SceneHtml, MeshRobotShowsItsVisualMeshesInTheirColoursAtItsLinkFrames)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const ManipulationSetup setup(pandaPickScene());
+    const ompl_core::ViewerPlan plan = manipulationViewerPlan(setup, nullptr, "panda");
+    const RobotModel &robot = setup.model()->robot();
+    const VisualModel look = VisualModel::fromUrdfFile(setup.model()->scene().robot.urdfFile, robot);
+    std::vector<Eigen::Isometry3d> frames;
+    robot.forwardKinematics(
+        setup.manipulationSpace()->robotValues(setup.getProblemDefinition()->getStartState(0)),
+        setup.model()->scene().robot.basePose, frames);
+
+    // the links with shapes, in link order, each at its link frame, then the cylinder
+    std::size_t body = 0;
+    std::set<std::string> colours;
+    std::map<std::string, const ompl_core::ViewerMesh *> fingerMeshes;
+    for (std::size_t l = 0; l < robot.links().size(); ++l)
+    {
+        if (look.links()[l].shapes.empty())
+            continue;
+        ASSERT_LT(body, plan.moving.size());
+        const ompl_core::ViewerBody &link = plan.moving[body];
+        EXPECT_EQ(link.name, robot.links()[l].name);
+        ASSERT_EQ(link.solids.size(), look.links()[l].shapes.size()) << link.name;
+        for (const ompl_core::ViewerSolid &solid : link.solids)
+        {
+            ASSERT_EQ(solid.kind, ompl_core::ViewerSolid::Kind::Mesh);
+            ASSERT_NE(solid.mesh, nullptr) << "a shared mesh";
+            EXPECT_LE(solid.mesh->vertices.size(), MeshReduction().maxVertices);
+            colours.insert(solid.colour);
+        }
+        fingerMeshes[link.name] = link.solids.front().mesh.get();
+        EXPECT_TRUE(plan.frames[0][body].isApprox(frames[l], 1e-12)) << link.name;
+        ++body;
+    }
+    ASSERT_EQ(plan.moving.size(), body + 1);
+    EXPECT_EQ(plan.moving.back().name, "cyl1");
+    EXPECT_TRUE(colours.count("#ffffff") == 1 && colours.count("#404040") == 1)
+        << "white links, dark grey joints (the .mtl colours)";
+    EXPECT_EQ(colours.count(""), 0u) << "every solid has a colour of its own";
+    EXPECT_EQ(fingerMeshes["panda_leftfinger"], fingerMeshes["panda_rightfinger"]) << "one file, one mesh";
+    // the goal robot (the "ready" state) draws the same meshes again
+    const ompl_core::ViewerBody *goal = ompl_core::test::bodyNamed(plan.goals, "goal robot");
+    ASSERT_NE(goal, nullptr);
+    std::set<const ompl_core::ViewerMesh *> linkMeshes;
+    for (std::size_t b = 0; b < body; ++b)
+        for (const ompl_core::ViewerSolid &solid : plan.moving[b].solids)
+            linkMeshes.insert(solid.mesh.get());
+    for (const ompl_core::ViewerSolid &solid : goal->solids)
+        EXPECT_EQ(linkMeshes.count(solid.mesh.get()), 1u);
+
+    // the page holds each mesh once and stays small
+    std::ostringstream page;
+    writeSceneHtml(page, setup, nullptr, "panda");
+    std::size_t written = 0;
+    for (std::size_t at = page.str().find("\"vertices\":["); at != std::string::npos;
+         at = page.str().find("\"vertices\":[", at + 1))
+        ++written;
+    EXPECT_EQ(written, linkMeshes.size()) << "the cylinder and the tables are no meshes";
+    EXPECT_LT(page.str().size(), 3u << 20u);
+}
+
+TEST(SceneHtml, SurfaceSlabsStandAboveTheObstacleTopsTheyLieOn)
+{
+    // a slab sunk into its table top would fight with the top's face for the same pixels
+    const ManipulationSetup setup(pandaPickScene());
+    const ompl_core::ViewerPlan plan = manipulationViewerPlan(setup, nullptr, "panda");
+    const ompl_core::ViewerBody *slab = ompl_core::test::bodyNamed(plan.fixed, "table1");
+    ASSERT_NE(slab, nullptr);
+    const ompl_core::ViewerSolid &solid = slab->solids.at(0);
+    const double top = solid.pose.translation().z() + solid.size.z() / 2.0;
+    EXPECT_GT(top, 0.43 + 5e-4) << "above the table top at 0.43 m";
+    EXPECT_LE(top, 0.43 + 2e-3) << "objects resting on it sink in no more than 2 mm";
+    // the floor slab is drawn light, the tables' tops (at the lowest surface's height) too
+    EXPECT_EQ(ompl_core::test::bodyNamed(plan.fixed, "floor")->colour, FLOOR_COLOUR);
 }

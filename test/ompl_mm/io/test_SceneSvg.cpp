@@ -13,7 +13,9 @@
 #include "ompl_mm/io/SceneSvg.h"
 
 #include "common/MobileBlocked.h"
+#include "common/PandaPick.h"
 #include "ompl_core/run/GlobalSeed.h"
+#include "ompl_mm/io/LabelLayout.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
@@ -364,7 +366,13 @@ TEST(SceneSvg, ArmPathDrawsTheArmAtStartEveryModeSwitchAndEnd)
     EXPECT_EQ(runs, 10u) << "3 pickups, 3 transfers and the transits between them";
     const auto poses = byClassIn(side, "arm-pose");
     ASSERT_EQ(poses.size(), runs + 1);
-    EXPECT_EQ(byClass(doc, "arm-pose").size(), poses.size()) << "arms are drawn in the side view only";
+    // the top view draws the arm at the same waypoints
+    const auto topViews = byClass(doc, "top-view");
+    ASSERT_EQ(topViews.size(), 1u);
+    const auto topPoses = byClassIn(topViews[0], "arm-pose");
+    ASSERT_EQ(topPoses.size(), poses.size());
+    for (std::size_t i = 0; i < poses.size(); ++i)
+        EXPECT_EQ(titleOf(topPoses[i]), titleOf(poses[i]));
     EXPECT_EQ(titleOf(poses.front()).rfind("waypoint 0: ", 0), 0u);
     EXPECT_EQ(titleOf(poses.back()), "waypoint " + std::to_string(path.getStateCount() - 1) + ": end");
     // the arm starts and ends at zero (the goal's tolerance: 0.01 rad a joint)
@@ -400,5 +408,128 @@ TEST(SceneSvg, ArmPathDrawsTheArmAtStartEveryModeSwitchAndEnd)
             inside =
                 inside || (end->Attribute("fill", colour.c_str()) != nullptr && pixelBox(end).contains(at));
         EXPECT_TRUE(inside) << colour;
+    }
+}
+
+namespace
+{
+    /** The polygons' corners of a group, in pixels. */
+    std::vector<std::vector<Eigen::Vector2d>> polygonsIn(const tinyxml2::XMLElement *group)
+    {
+        std::vector<std::vector<Eigen::Vector2d>> polygons;
+        for (const tinyxml2::XMLElement *e = group->FirstChildElement(); e != nullptr;
+             e = e->NextSiblingElement())
+        {
+            if (std::string(e->Name()) != "polygon")
+                continue;
+            polygons.emplace_back();
+            std::istringstream points(e->Attribute("points"));
+            double x = 0, y = 0;
+            char comma = 0;
+            while (points >> x >> comma >> y)
+                polygons.back().emplace_back(x, y);
+        }
+        return polygons;
+    }
+
+    /** The label texts' boxes, as LabelLayout estimates them for 12 px text. */
+    std::vector<Eigen::AlignedBox2d> labelBoxes(const tinyxml2::XMLDocument &doc)
+    {
+        const ompl_mm::LabelLayout estimate(
+            Eigen::AlignedBox2d(Eigen::Vector2d::Zero(), Eigen::Vector2d::Ones()), 12.0);
+        std::vector<Eigen::AlignedBox2d> boxes;
+        for (const tinyxml2::XMLElement *label : byClass(doc, "label"))
+            boxes.push_back(estimate.textBox(label->GetText(),
+                                             {label->DoubleAttribute("x"), label->DoubleAttribute("y")}));
+        return boxes;
+    }
+
+    void expectApart(const std::vector<Eigen::AlignedBox2d> &boxes)
+    {
+        for (std::size_t a = 0; a < boxes.size(); ++a)
+            for (std::size_t b = a + 1; b < boxes.size(); ++b)
+            {
+                const Eigen::AlignedBox2d common = boxes[a].intersection(boxes[b]);
+                EXPECT_TRUE(common.isEmpty() || common.volume() == 0.0) << "labels " << a << " and " << b;
+            }
+    }
+}  // namespace
+
+TEST(SceneSvg, MeshArmIsDrawnFromAboveByItsLinksConvexHulls)
+{
+    const ManipulationSetup setup(pandaPickScene());
+    tinyxml2::XMLDocument doc;
+    ASSERT_EQ(doc.Parse(render(setup, nullptr).c_str()), tinyxml2::XML_SUCCESS) << doc.ErrorStr();
+    const auto topViews = byClass(doc, "top-view");
+    ASSERT_EQ(topViews.size(), 1u);
+    const auto poses = byClassIn(topViews[0], "arm-pose");
+    ASSERT_EQ(poses.size(), 1u) << "the start alone without a path";
+    const std::vector<std::vector<Eigen::Vector2d>> drawn = polygonsIn(poses[0]);
+
+    // the top view's pixels from the floor, a 2 m square about the origin
+    const tinyxml2::XMLElement *floor = named(byClassIn(topViews[0], "obstacle"), "floor");
+    ASSERT_NE(floor, nullptr);
+    const Eigen::AlignedBox2d floorPixels = pixelBox(floor);
+    const double perMetre = floorPixels.sizes().x() / 2.0;
+    EXPECT_NEAR(floorPixels.sizes().y() / 2.0, perMetre, 0.02);
+    const auto pixelOf = [&](const Eigen::Vector3d &p)
+    {
+        return Eigen::Vector2d(floorPixels.min().x() + (p.x() + 1.0) * perMetre,
+                               floorPixels.min().y() + (1.0 - p.y()) * perMetre);
+    };
+
+    // each link mesh at the start is outlined by the hull of all its vertices seen from above: the
+    // polygon's box is the box of every vertex (computed here from the mesh, not its hull)
+    const RobotModel &robot = setup.model()->robot();
+    const ManipulationStateSpace &space = *setup.manipulationSpace();
+    std::vector<Eigen::Isometry3d> frames;
+    robot.forwardKinematics(space.robotValues(setup.getProblemDefinition()->getStartState(0)),
+                            setup.model()->scene().robot.basePose, frames);
+    std::size_t k = 0, detailed = 0;
+    for (std::size_t l = 0; l < robot.links().size(); ++l)
+        for (const LinkShape &shape : robot.links()[l].shapes)
+        {
+            ASSERT_LT(k, drawn.size());
+            ASSERT_EQ(shape.shape.kind, Shape::Kind::Mesh);
+            Eigen::AlignedBox2d expected, polygon;
+            for (const Eigen::Vector3d &v : shape.shape.mesh->vertices)
+                expected.extend(pixelOf(frames[l] * shape.origin * v));
+            for (const Eigen::Vector2d &corner : drawn[k])
+                polygon.extend(corner);
+            EXPECT_LT((polygon.min() - expected.min()).cwiseAbs().maxCoeff(), 0.05) << robot.links()[l].name;
+            EXPECT_LT((polygon.max() - expected.max()).cwiseAbs().maxCoeff(), 0.05) << robot.links()[l].name;
+            detailed += drawn[k].size() > 8 ? 1 : 0;
+            ++k;
+        }
+    EXPECT_EQ(k, drawn.size()) << "one polygon per link shape";
+    EXPECT_GT(detailed, k / 2) << "hulls, not bounding boxes";
+}
+
+TEST(SceneSvg, LabelsNeverOverlap)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    for (const Scene &scene : {pandaPickScene(), kukaTableScene()})
+    {
+        ompl_core::reseedOmpl(1);
+        ManipulationSetup setup(scene);
+        setup.mopl()->setSeed(1);
+        // far above the iterations either seed needs, so a regression fails quickly
+        ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(5000)),
+                  ompl::base::PlannerStatus::EXACT_SOLUTION)
+            << scene.name;
+        tinyxml2::XMLDocument doc;
+        ASSERT_EQ(doc.Parse(render(setup, &setup.manipulationPath()).c_str()), tinyxml2::XML_SUCCESS);
+        const std::vector<Eigen::AlignedBox2d> boxes = labelBoxes(doc);
+        // every goal is named, and the objects where they end (KUKA TABLE: 3, a crowded table)
+        EXPECT_GE(boxes.size(), 2 * scene.objectGoals.size()) << scene.name;
+        expectApart(boxes);
+        // no label covers a goal symbol's centre
+        for (const tinyxml2::XMLElement *goal : byClass(doc, "goal"))
+        {
+            const tinyxml2::XMLElement *ring = goal->FirstChildElement("g")->FirstChildElement("circle");
+            const Eigen::Vector2d centre(ring->DoubleAttribute("cx"), ring->DoubleAttribute("cy"));
+            for (const Eigen::AlignedBox2d &box : boxes)
+                EXPECT_FALSE(box.contains(centre)) << scene.name;
+        }
     }
 }

@@ -303,6 +303,33 @@ TEST_F(KukaGrasp, PickupExplainsTheLiftOnly)
     EXPECT_FALSE(pickup->explain(lifted, grasp).has_value());
 }
 
+TEST_F(KukaGrasp, AnEndedTerminationConditionStopsPickupAndTransferBeforeTheirInverseKinematics)
+{
+    // a planner's time limit reaches into the primitives: once it is over they solve nothing
+    const ob::PlannerTerminationCondition ended([] { return true; });
+    Trajectory trajectory(&space);
+    trajectory.reset(start);
+    const double ikBefore = pickup->inverseKinematicsTime();
+    EXPECT_FALSE(pickup->propagate(start, target, trajectory, ended));
+    EXPECT_EQ(trajectory.size(), 1u);
+    EXPECT_EQ(pickup->inverseKinematicsTime(), ikBefore);
+
+    ASSERT_TRUE(pickUp(trajectory));  // without the condition it picks up
+    Trajectory carried(&space);
+    carried.reset(trajectory.back());
+    const double ikHeld = transfer->inverseKinematicsTime();
+    EXPECT_FALSE(transfer->propagate(trajectory.back(), target, carried, ended));
+    EXPECT_EQ(carried.size(), 1u);
+    EXPECT_EQ(transfer->inverseKinematicsTime(), ikHeld);
+
+    // nor does the empty-space planner apply any primitive
+    EmptySpacePlanner esp(&space, setup.primitives());
+    Trajectory planned(&space);
+    ompl::RNG rng(1);
+    EXPECT_EQ(esp.plan(start, target, planned, rng, ended), Outcome::Failed);
+    EXPECT_EQ(planned.size(), 1u);
+}
+
 TEST(KukaGraspSeeds, TransferPlacesTheHeldObjectExactlyAtItsTarget)
 {
     // a table per target yaw, made alike: the placing IK's random restarts are the same for both
