@@ -1,15 +1,22 @@
 // Tests for loadSceneRobot: the SRDF's planning group, disabled pairs, end effector and named
-// states, and the scene's fixed joints, on the shipped Panda and on a closed-linkage gripper.
+// states, and the scene's fixed joints, on the shipped Panda and on a closed-linkage gripper; the
+// Panda's planned joints and coupled fingers as its path file shows them.
 #include "ompl_mm/setup/SceneRobot.h"
 
+#include "ompl_mm/io/PathFile.h"
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
 
 #include "common/MobileBlocked.h"
 
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/util/Console.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <iterator>
+#include <sstream>
 
 using namespace ompl_mm;
 using namespace ompl_mm::test;
@@ -121,4 +128,70 @@ TEST(SceneRobot, SrdfPairsStandInForAllowCollisionOnAClosedLinkage)
     const std::string message = setupError(plain);
     EXPECT_NE(message.find("robot link 'finger' and robot link 'knuckle' collide"), std::string::npos)
         << message;
+}
+
+namespace
+{
+    /** The path file of a solved setup: its header's column names and its rows of numbers (the
+        segment and object columns left out). */
+    std::pair<std::vector<std::string>, std::vector<std::vector<double>>> pathFileOf(
+        const ManipulationSetup &setup)
+    {
+        std::ostringstream out;
+        writePathFile(out, setup.manipulationPath());
+        std::istringstream in(out.str());
+        std::string line;
+        std::getline(in, line);
+        std::istringstream header(line.substr(2));
+        std::vector<std::string> columns{std::istream_iterator<std::string>(header), {}};
+        std::vector<std::vector<double>> rows;
+        while (std::getline(in, line))
+        {
+            std::istringstream fields(line);
+            std::string segment, object;
+            fields >> segment >> object;
+            rows.emplace_back(std::istream_iterator<double>(fields), std::istream_iterator<double>());
+        }
+        return {columns, rows};
+    }
+}  // namespace
+
+TEST(SceneRobot, ThePandaPlansSevenJointsOrItsFingersCoupledAsThePathFileShows)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    // the arm group: 7 joint columns, no finger
+    Scene arm = loadScene(OMPL_MM_SCENES_DIR "/panda_reach.xml");
+    ManipulationSetup armSetup(arm);
+    armSetup.mopl()->setSeed(1);
+    ASSERT_EQ(armSetup.solve(ompl::base::IterationTerminationCondition(2000)),
+              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const auto [armColumns, armRows] = pathFileOf(armSetup);
+    EXPECT_EQ(std::count_if(armColumns.begin(), armColumns.end(),
+                            [](const std::string &c) { return c.rfind("panda_joint", 0) == 0; }),
+              7);
+    EXPECT_EQ(std::find(armColumns.begin(), armColumns.end(), "panda_finger_joint1"), armColumns.end());
+
+    // arm and hand: the first finger planned, the second following it in every row
+    Scene hand = arm;
+    hand.robot.group = "panda_arm_hand";
+    hand.robot.fixedJoints.clear();
+    hand.robotStart.push_back(0.04);
+    hand.robotGoal.joints.push_back(0.01);
+    ManipulationSetup handSetup(hand);
+    EXPECT_EQ(handSetup.manipulationSpace()->model()->dof(), 8u);
+    handSetup.mopl()->setSeed(1);
+    ASSERT_EQ(handSetup.solve(ompl::base::IterationTerminationCondition(2000)),
+              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const auto [columns, rows] = pathFileOf(handSetup);
+    const auto column = [&columns = columns](const std::string &name) {
+        return std::find(columns.begin(), columns.end(), name) - columns.begin() - 2;
+    };  // less segment, object
+    const long leader = column("panda_finger_joint1"), follower = column("panda_finger_joint2");
+    ASSERT_LT(leader, static_cast<long>(columns.size()) - 2);
+    ASSERT_LT(follower, static_cast<long>(columns.size()) - 2);
+    ASSERT_GT(rows.size(), 1u);
+    for (const std::vector<double> &row : rows)
+        EXPECT_EQ(row[follower], row[leader]);
+    EXPECT_NEAR(rows.front()[leader], 0.04, 1e-12);
+    EXPECT_NEAR(rows.back()[leader], 0.01, 0.01);
 }
