@@ -161,9 +161,8 @@ namespace ompl_mm
         }
 
         /** Adds what the SRDF says to scene and holds the joints outside its planning group. */
-        RobotModel applySrdf(Scene &scene, RobotModel robot)
+        RobotModel applySrdf(Scene &scene, const SrdfFile &srdf, RobotModel robot)
         {
-            const SrdfFile srdf = readSrdfFile(scene.robot.srdfFile);
             if (!scene.robot.group.empty())
                 robot = planGroup(scene, srdf, robot);
             for (const SrdfDisabledPair &pair : srdf.disabledCollisions)
@@ -175,11 +174,8 @@ namespace ompl_mm
 
         /** Turns the start's and the goal's named states into joint values (after every joint is held
             that will be, so the values are the planning joints'). */
-        void resolveStates(Scene &scene, const RobotModel &robot)
+        void resolveStates(Scene &scene, const SrdfFile &srdf, const RobotModel &robot)
         {
-            if (scene.robotStartState.empty() && scene.robotGoal.state.empty())
-                return;
-            const SrdfFile srdf = readSrdfFile(scene.robot.srdfFile);
             if (!scene.robotStartState.empty())
                 scene.robotStart =
                     stateValues(srdf, scene.robot.group, scene.robotStartState, robot, scene.robotStartWhere);
@@ -195,8 +191,12 @@ namespace ompl_mm
     SceneRobot loadSceneRobot(const Scene &scene)
     {
         SceneRobot loaded{scene, readUrdf(scene)};
-        if (!scene.robot.srdfFile.empty())
-            loaded.robot = applySrdf(loaded.scene, std::move(loaded.robot));
+        // the scene loader lets named states through only with an SRDF
+        const std::optional<SrdfFile> srdf =
+            scene.robot.srdfFile.empty() ? std::nullopt
+                                         : std::optional<SrdfFile>(readSrdfFile(scene.robot.srdfFile));
+        if (srdf)
+            loaded.robot = applySrdf(loaded.scene, *srdf, std::move(loaded.robot));
         for (const FixedJointValue &fixed : scene.robot.fixedJoints)
             try
             {
@@ -206,7 +206,12 @@ namespace ompl_mm
             {
                 throw ompl_core::InputError(fixed.where, e.what());
             }
-        resolveStates(loaded.scene, loaded.robot);
+        if (srdf)
+            resolveStates(loaded.scene, *srdf, loaded.robot);
+        else if (!scene.robotStartState.empty() || !scene.robotGoal.state.empty())
+            throw ompl_core::InputError(
+                scene.robotStartState.empty() ? scene.robotGoal.where : scene.robotStartWhere,
+                "a named state needs the robot's SRDF file (RobotSpec::srdfFile)");
         return loaded;
     }
 }  // namespace ompl_mm
