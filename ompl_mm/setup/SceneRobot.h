@@ -25,6 +25,6 @@ namespace ompl_mm
         joint; at the SRDF's lines for SRDF faults and for a group naming a joint or link the URDF
         does not have; at the robot element when the group is unknown or leaves nothing to plan; at
         the start's or goal's robot element for a named state that no group has or that gives no
-        value for a planning joint. */
+        value for a planning joint, or that comes without an SRDF file. */
     SceneRobot loadSceneRobot(const Scene &scene);
 }  // namespace ompl_mm

@@ -107,6 +107,10 @@ TEST(SceneRobot, SrdfFaultsNameTheirPlace)
     scene.robotStartState = "home";
     EXPECT_EQ(inputErrorOf([&] { loadSceneRobot(scene); }),
               "s.xml:12: SRDF file '" + PANDA_DIR + "panda.srdf' has no group state 'home'");
+    scene.robot.srdfFile.clear();
+    scene.robot.group.clear();
+    EXPECT_EQ(inputErrorOf([&] { loadSceneRobot(scene); }),
+              "s.xml:12: a named state needs the robot's SRDF file (RobotSpec::srdfFile)");
 }
 
 TEST(SceneRobot, SrdfPairsStandInForAllowCollisionOnAClosedLinkage)
