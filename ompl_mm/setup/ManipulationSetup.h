@@ -67,14 +67,6 @@ namespace ompl_mm
         /** The current planner when it is MOPL, else null. */
         std::shared_ptr<MOPL> mopl() const;
 
-        /** SimpleSetup's solve, whatever the planner, with the motion validator's checks stopped at
-            ptc too: OMPL's planners call checkMotion between their polls of ptc, and one continuous
-            check near triangle meshes can take a tenth of a second (MOPL polls ptc within its steps
-            itself). */
-        ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
-        /** solve() within time seconds. */
-        ompl::base::PlannerStatus solve(double time = 1.0) override;
-
         /** The solution as a ManipulationPath, owned by the problem definition (valid until its
             solutions are cleared). Another planner's PathGeometric takes its place as a
             ManipulationPath of the same states, labelled from their motions.

@@ -2,7 +2,6 @@
 
 #include "ompl_core/io/InputError.h"
 #include "ompl_mm/base/ManipulationStateSampler.h"
-#include "ompl_mm/base/StepTermination.h"
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 #include "ompl_mm/setup/ProblemCheck.h"
 #include "ompl_mm/setup/SceneRobot.h"
@@ -12,7 +11,6 @@
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 
 #include <algorithm>
-#include <optional>
 
 namespace ompl_mm
 {
@@ -139,23 +137,6 @@ namespace ompl_mm
         if (!reason.empty())
             ProblemCheck(*space_).rejectStart(start.get(), reason);
         setStartState(start);
-    }
-
-    ompl::base::PlannerStatus ManipulationSetup::solve(const ompl::base::PlannerTerminationCondition &ptc)
-    {
-        // polled between the validator's rounds at most every millisecond, so that an
-        // iteration-counting condition counts no more than a planner's own polls
-        const StepTermination inner(ptc);
-        std::optional<ManipulationMotionValidator::TerminationScope> bounded;
-        if (auto validator =
-                std::dynamic_pointer_cast<ManipulationMotionValidator>(si_->getMotionValidator()))
-            bounded.emplace(*validator, inner.condition());
-        return ompl::geometric::SimpleSetup::solve(ptc);
-    }
-
-    ompl::base::PlannerStatus ManipulationSetup::solve(double time)
-    {
-        return solve(ompl::base::timedPlannerTerminationCondition(time));
     }
 
     ManipulationPath &ManipulationSetup::manipulationPath() const

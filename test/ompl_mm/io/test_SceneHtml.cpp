@@ -6,6 +6,7 @@
 #include "ompl_mm/io/SceneHtml.h"
 
 #include "common/MobileBlocked.h"
+#include "common/MoplIterations.h"
 #include "common/PandaPick.h"
 #include "common/ViewerPlanChecks.h"
 #include "ompl_mm/io/MeshReduction.h"
@@ -13,7 +14,6 @@
 #include "ompl_mm/planners/MOPL.h"
 #include "ompl_mm/robot/VisualModel.h"
 
-#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
 
 #include <gtest/gtest.h>
@@ -68,7 +68,7 @@ namespace
             scene_ = std::make_unique<Scene>(mobileBlockedScene());
             setup_ = std::make_unique<ManipulationSetup>(*scene_);
             setup_->mopl()->setSeed(1);
-            solved_ = setup_->solve(ompl::base::IterationTerminationCondition(MAX_ITERATIONS)) ==
+            solved_ = setup_->solve(test::moplIterations(*setup_, MAX_ITERATIONS)) ==
                       ompl::base::PlannerStatus::EXACT_SOLUTION;
             if (solved_)
                 plan_ = std::make_unique<ompl_core::ViewerPlan>(

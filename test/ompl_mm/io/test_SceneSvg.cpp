@@ -13,12 +13,12 @@
 #include "ompl_mm/io/SceneSvg.h"
 
 #include "common/MobileBlocked.h"
+#include "common/MoplIterations.h"
 #include "common/PandaPick.h"
 #include "ompl_core/run/GlobalSeed.h"
 #include "ompl_mm/io/LabelLayout.h"
 
 #include <ompl/base/ScopedState.h>
-#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
 
 using namespace ompl_mm;
@@ -350,8 +350,7 @@ TEST(SceneSvg, ArmPathDrawsTheArmAtStartEveryModeSwitchAndEnd)
     ManipulationSetup setup(scene);
     setup.mopl()->setSeed(1);
     // far above the few hundred iterations the seed needs, so a regression fails quickly
-    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(5000)),
-              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    ASSERT_EQ(setup.solve(test::moplIterations(setup, 5000)), ompl::base::PlannerStatus::EXACT_SOLUTION);
     const ManipulationPath &path = setup.manipulationPath();
     tinyxml2::XMLDocument doc;
     ASSERT_EQ(doc.Parse(render(setup, &path).c_str()), tinyxml2::XML_SUCCESS) << doc.ErrorStr();
@@ -514,8 +513,7 @@ TEST(SceneSvg, LabelsNeverOverlap)
         ManipulationSetup setup(scene);
         setup.mopl()->setSeed(1);
         // far above the iterations either seed needs, so a regression fails quickly
-        ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(5000)),
-                  ompl::base::PlannerStatus::EXACT_SOLUTION)
+        ASSERT_EQ(setup.solve(test::moplIterations(setup, 5000)), ompl::base::PlannerStatus::EXACT_SOLUTION)
             << scene.name;
         tinyxml2::XMLDocument doc;
         ASSERT_EQ(doc.Parse(render(setup, &setup.manipulationPath()).c_str()), tinyxml2::XML_SUCCESS);

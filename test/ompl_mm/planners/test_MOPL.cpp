@@ -1,12 +1,12 @@
 // Tests for MOPL: solves MOBILE BLOCKED for fixed seeds and re-checks every solution with an
 // independent planar geometry model (common/PlanarRecheck.h), then checks reproducibility and the
 // input checks of MOPL's parameters.
+#include "common/MoplIterations.h"
 #include "common/PlanarRecheck.h"
 #include "ompl_core/run/ParameterSetting.h"
 
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
-#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
 
 #include <gtest/gtest.h>
@@ -28,7 +28,7 @@ namespace
 
     ompl::base::PlannerStatus boundedSolve(ManipulationSetup &setup)
     {
-        return setup.solve(ompl::base::IterationTerminationCondition(MAX_ITERATIONS));
+        return setup.solve(test::moplIterations(setup, MAX_ITERATIONS));
     }
     class MOPLOnMobileBlocked : public ::testing::TestWithParam<unsigned int>
     {
@@ -79,7 +79,7 @@ TEST_P(MOPLAcrossConnectSteps, EveryPathPassesTheIndependentRecheck)
     ManipulationSetup setup(scene);
     ompl_core::applyParameters(*setup.getPlanner(), {{"connect_step", c.connectStep, {}}});
     setup.mopl()->setSeed(c.seed);
-    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(c.iterations)),
+    ASSERT_EQ(setup.solve(test::moplIterations(setup, c.iterations)),
               ompl::base::PlannerStatus::EXACT_SOLUTION);
     planarRecheck(*setup.manipulationSpace(), setup.manipulationPath(), scene);
 }
@@ -174,7 +174,7 @@ TEST(MOPL, TreeVerticesLieAtMostAVertexStepApart)
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     ManipulationSetup setup(mobileBlockedScene());
     setup.mopl()->setSeed(1);
-    setup.solve(ompl::base::IterationTerminationCondition(300));
+    setup.solve(test::moplIterations(setup, 300));
     ompl::base::PlannerData data(setup.getSpaceInformation());
     setup.getPlannerData(data);
     const ManipulationStateSpace &space = *setup.manipulationSpace();

@@ -4,9 +4,9 @@
 // object held, an object that slides on its surface moving with the tool (a push) and alone, nothing else
 // moving, the goal reached; and OMPL's own PathGeometric::check().
 #include "common/MobileBlocked.h"
+#include "common/MoplIterations.h"
 #include "ompl_core/run/GlobalSeed.h"
 
-#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
 
 #include <gtest/gtest.h>
@@ -165,7 +165,7 @@ namespace
     /** Solves within MAX_ITERATIONS. */
     ompl::base::PlannerStatus solveBounded(ManipulationSetup &setup)
     {
-        return setup.solve(ompl::base::IterationTerminationCondition(MAX_ITERATIONS));
+        return setup.solve(test::moplIterations(setup, MAX_ITERATIONS));
     }
 
     class MOPLOnKukaTable : public ::testing::TestWithParam<unsigned int>
@@ -215,7 +215,7 @@ TEST(MOPLOnMeka, SolvesWithPickupsAndPassesTheRecheck)
     const Scene scene = loadScene(OMPL_MM_SCENES_DIR "/meka_cleanup.xml");
     const std::unique_ptr<ManipulationSetup> solved = seededSetup(scene, MEKA_SEED);
     ManipulationSetup &setup = *solved;
-    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(MEKA_MAX_ITERATIONS)),
+    ASSERT_EQ(setup.solve(test::moplIterations(setup, MEKA_MAX_ITERATIONS)),
               ompl::base::PlannerStatus::EXACT_SOLUTION);
     const ManipulationPath &path = setup.manipulationPath();
     // the bottles of the upper level change levels: picked up and carried

@@ -3,10 +3,10 @@
 // pickup whose palm meets every object, which the planner reports with the blocking pair.
 #include "ompl_mm/primitives/Grasping.h"
 
+#include "common/MoplIterations.h"
 #include "common/PandaPick.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
 
-#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
 
 #include <gtest/gtest.h>
@@ -51,15 +51,22 @@ namespace
         return scene;
     }
 
-    std::shared_ptr<Grasping> graspingOf(const Scene &scene, double tilt, std::optional<double> depth = {})
+    /** A grasping of the scene's space with a tilt and depth, with the setup that owns the space. */
+    struct GraspingOf
     {
-        ManipulationSetup setup(scene);
-        Grasping::Settings settings;
-        settings.tilt = tilt;
-        settings.depth = depth;
-        return std::make_shared<Grasping>(setup.manipulationSpace().get(), settings,
-                                          InverseKinematicsFactory());
-    }
+        GraspingOf(const Scene &scene, double tilt, std::optional<double> depth = {}) : setup(scene)
+        {
+            Grasping::Settings settings;
+            settings.tilt = tilt;
+            settings.depth = depth;
+            grasping = std::make_unique<Grasping>(setup.manipulationSpace().get(), settings,
+                                                  InverseKinematicsFactory());
+        }
+        const Grasping *operator->() const { return grasping.get(); }
+
+        ManipulationSetup setup;
+        std::unique_ptr<Grasping> grasping;
+    };
 }  // namespace
 
 TEST(GraspDepth, ThePandasHandReachIsWhereItsPalmMeshBegins)
@@ -68,7 +75,7 @@ TEST(GraspDepth, ThePandasHandReachIsWhereItsPalmMeshBegins)
     // the grasp target sits 0.105 m along the hand's z; the palm's mesh ends below that
     const double expected = 0.105 - palmTopOfHandMesh();
     ASSERT_GT(expected, 0.03);
-    const std::shared_ptr<Grasping> grasping = graspingOf(test::pandaPickScene(), 0.0);
+    const GraspingOf grasping(test::pandaPickScene(), 0.0);
     EXPECT_NEAR(grasping->handReach(), expected, 1.5e-3) << "measured in millimetre steps";
 }
 
@@ -76,18 +83,18 @@ TEST(GraspDepth, TopGraspsRiseToKeepThePalmAboveTallObjectsAndSideGraspsDoNot)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     const Scene tall = pandaWith("lift_height 0.05", 0.15);
-    const std::shared_ptr<Grasping> top = graspingOf(tall, 0.0);
+    const GraspingOf top(tall, 0.0);
     const double reach = top->handReach();
     EXPECT_NEAR(top->graspHeight(0), 0.15 + Grasping::HAND_MARGIN - reach, 1e-12)
         << "the palm 5 mm above the top";
-    const std::shared_ptr<Grasping> tilted = graspingOf(tall, 0.3);
+    const GraspingOf tilted(tall, 0.3);
     EXPECT_NEAR(tilted->graspHeight(0), 0.15 + Grasping::HAND_MARGIN - reach * std::cos(0.3), 1e-12);
     // from the side the palm passes beside the cylinder: held at its centre
-    EXPECT_DOUBLE_EQ(graspingOf(tall, M_PI / 2)->graspHeight(0), 0.075);
+    EXPECT_DOUBLE_EQ(GraspingOf(tall, M_PI / 2)->graspHeight(0), 0.075);
     // a short object is held at its centre, and an explicit depth is taken as it is
-    EXPECT_DOUBLE_EQ(graspingOf(pandaWith("lift_height 0.05", 0.05), 0.0)->graspHeight(0), 0.025);
-    EXPECT_DOUBLE_EQ(graspingOf(tall, 0.0, 0.1)->graspHeight(0), 0.05);
-    EXPECT_DOUBLE_EQ(graspingOf(tall, 0.0, 0.3)->graspHeight(0), 0.0) << "no deeper than the base";
+    EXPECT_DOUBLE_EQ(GraspingOf(pandaWith("lift_height 0.05", 0.05), 0.0)->graspHeight(0), 0.025);
+    EXPECT_DOUBLE_EQ(GraspingOf(tall, 0.0, 0.1)->graspHeight(0), 0.05);
+    EXPECT_DOUBLE_EQ(GraspingOf(tall, 0.0, 0.3)->graspHeight(0), 0.0) << "no deeper than the base";
 }
 
 TEST(GraspDepth, ANegativeGraspDepthIsAnErrorAtThePrimitivesLine)
@@ -111,8 +118,7 @@ TEST(GraspDepth, APickupWhosePalmMeetsEveryObjectIsReportedWithTheBlockingPair)
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
     ManipulationSetup setup(pandaWith("grasp_depth 0.05", 0.1));
     setup.mopl()->setSeed(1);
-    ASSERT_NE(setup.solve(ompl::base::IterationTerminationCondition(150)),
-              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    ASSERT_NE(setup.solve(test::moplIterations(setup, 150)), ompl::base::PlannerStatus::EXACT_SOLUTION);
     const PrimitiveTally::Record &pickup = setup.mopl()->primitiveTally().records().at("pickup");
     EXPECT_TRUE(pickup.neverSucceeded());
     EXPECT_GT(pickup.stopped, 0u);
@@ -123,6 +129,6 @@ TEST(GraspDepth, APickupWhosePalmMeetsEveryObjectIsReportedWithTheBlockingPair)
     // with the automatic depth the same pickup goes through
     ManipulationSetup automatic(pandaWith("lift_height 0.05", 0.1));
     automatic.mopl()->setSeed(1);
-    EXPECT_EQ(automatic.solve(ompl::base::IterationTerminationCondition(3000)),
+    EXPECT_EQ(automatic.solve(test::moplIterations(automatic, 3000)),
               ompl::base::PlannerStatus::EXACT_SOLUTION);
 }

@@ -8,13 +8,13 @@
 
 #include "common/InputErrors.h"
 #include "common/MobileBlocked.h"
+#include "common/MoplIterations.h"
 #include "common/ScratchDirectory.h"
 #include "ompl_mm/collision/CollisionWorld.h"
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
 
 #include <ompl/base/ScopedState.h>
-#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
 
 #include <gtest/gtest.h>
@@ -364,8 +364,7 @@ TEST_F(MeshGeometry, MobileBlockedWithAMeshRobotCollidesWhereTheMeshIsAndIsSolve
     test::setRobot(space, state.get(), -0.35, 0.0);
     EXPECT_TRUE(setup.getSpaceInformation()->isValid(state.get())) << "clear of block1 and block2";
     setup.mopl()->setSeed(1);
-    ASSERT_EQ(setup.solve(ompl::base::IterationTerminationCondition(40000)),
-              ompl::base::PlannerStatus::EXACT_SOLUTION);
+    ASSERT_EQ(setup.solve(test::moplIterations(setup, 40000)), ompl::base::PlannerStatus::EXACT_SOLUTION);
     EXPECT_TRUE(setup.manipulationPath().check());
 }
 

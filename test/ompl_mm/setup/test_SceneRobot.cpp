@@ -8,8 +8,8 @@
 #include "ompl_mm/setup/ManipulationSetup.h"
 
 #include "common/MobileBlocked.h"
+#include "common/MoplIterations.h"
 
-#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
 
 #include <gtest/gtest.h>
@@ -167,7 +167,7 @@ TEST(SceneRobot, ThePandaPlansSevenJointsOrItsFingersCoupledAsThePathFileShows)
     Scene arm = loadScene(OMPL_MM_SCENES_DIR "/panda_reach.xml");
     ManipulationSetup armSetup(arm);
     armSetup.mopl()->setSeed(1);
-    ASSERT_EQ(armSetup.solve(ompl::base::IterationTerminationCondition(2000)),
+    ASSERT_EQ(armSetup.solve(test::moplIterations(armSetup, 2000)),
               ompl::base::PlannerStatus::EXACT_SOLUTION);
     const auto [armColumns, armRows] = pathFileOf(armSetup);
     EXPECT_EQ(std::count_if(armColumns.begin(), armColumns.end(),
@@ -184,7 +184,7 @@ TEST(SceneRobot, ThePandaPlansSevenJointsOrItsFingersCoupledAsThePathFileShows)
     ManipulationSetup handSetup(hand);
     EXPECT_EQ(handSetup.manipulationSpace()->model()->dof(), 8u);
     handSetup.mopl()->setSeed(1);
-    ASSERT_EQ(handSetup.solve(ompl::base::IterationTerminationCondition(2000)),
+    ASSERT_EQ(handSetup.solve(test::moplIterations(handSetup, 2000)),
               ompl::base::PlannerStatus::EXACT_SOLUTION);
     const auto [columns, rows] = pathFileOf(handSetup);
     const auto column = [&columns = columns](const std::string &name) {
