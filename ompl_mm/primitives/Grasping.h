@@ -59,7 +59,7 @@ namespace ompl_mm
             fingers): the deepest an object's top can reach into the hand. The hand is the tool link
             and the links fixed to it (fixed joints, and joints the scene holds); meshes count as
             their convex hulls. Infinity when no shape lies on that line within MAX_HAND_REACH. */
-        double handReach() const { return handReach_; }
+        double handReach() const;
         /** How far handReach() looks, metres. */
         static constexpr double MAX_HAND_REACH = 0.5;
         /** The height above the object's base at which the tool point grasps it, metres (see
@@ -136,7 +136,8 @@ namespace ompl_mm
 
         const ManipulationStateSpace *space_;
         Settings settings_;
-        double handReach_;
+        /** handReach(), measured on its first use: only a pickup's grasps need it. */
+        mutable std::optional<double> handReach_;
         std::unique_ptr<InverseKinematics> ik_;
         std::vector<double> work_;
         ompl::RNG rng_;

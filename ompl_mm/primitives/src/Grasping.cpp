@@ -33,7 +33,13 @@ namespace ompl_mm
         if (settings_.depth && !(*settings_.depth >= 0.0))
             throw ompl::Exception("the grasp depth must be at least 0, got " +
                                   std::to_string(*settings_.depth));
-        handReach_ = measureHandReach();
+    }
+
+    double Grasping::handReach() const
+    {
+        if (!handReach_)
+            handReach_ = measureHandReach();
+        return *handReach_;
     }
 
     double Grasping::measureHandReach() const
@@ -96,10 +102,11 @@ namespace ompl_mm
             return std::max(0.0, height - *settings_.depth);
         // the hand's first shape lies handReach back along the tilted approach axis: beside the
         // object (a side grasp) it takes nothing from the grasp; above it, it must clear the top
-        if (!std::isfinite(handReach_) ||
-            handReach_ * std::sin(std::abs(settings_.tilt)) >= shape.footprintRadius() + HAND_MARGIN)
+        const double reach = handReach();
+        if (!std::isfinite(reach) ||
+            reach * std::sin(std::abs(settings_.tilt)) >= shape.footprintRadius() + HAND_MARGIN)
             return 0.5 * height;
-        return std::max(0.5 * height, height + HAND_MARGIN - handReach_ * std::cos(settings_.tilt));
+        return std::max(0.5 * height, height + HAND_MARGIN - reach * std::cos(settings_.tilt));
     }
 
     Eigen::Isometry3d Grasping::solvedInTool(const double *q) const
