@@ -3,6 +3,7 @@
 #include "ompl_mm/primitives/Trajectory.h"
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
@@ -48,8 +49,11 @@ namespace ompl_mm
         /** Forgets every count. */
         void clear() { records_.clear(); }
 
+        /** The records by kind name (ordered, looked up by any string type), for the kinds noted so
+            far. */
+        using Records = std::map<std::string, Record, std::less<>>;
         /** The records by kind name, for the kinds noted so far. */
-        const std::map<std::string, Record> &records() const { return records_; }
+        const Records &records() const { return records_; }
 
         /** One line per kind that was tried and never succeeded, e.g. "pickup: 1240 attempts, none
             succeeded; motions stopped by robot link 'panda_hand' and object 'cyl1' (1180 of 1180)";
@@ -57,6 +61,10 @@ namespace ompl_mm
         std::string failureSummary() const;
 
     private:
-        std::map<std::string, Record> records_;
+        /** The record of kind, made when it is first noted: the walks note every segment they
+            check, so an existing record is found without building a key. */
+        Record &recordOf(PrimitiveKind kind);
+
+        Records records_;
     };
 }  // namespace ompl_mm

@@ -11,9 +11,18 @@ namespace ompl_mm
         return main;
     }
 
+    PrimitiveTally::Record &PrimitiveTally::recordOf(PrimitiveKind kind)
+    {
+        const std::string_view name = primitiveKindName(kind);
+        auto it = records_.find(name);
+        if (it == records_.end())
+            it = records_.emplace(std::string(name), Record()).first;
+        return it->second;
+    }
+
     void PrimitiveTally::attempt(PrimitiveKind kind, bool found, const std::string &reason)
     {
-        Record &record = records_[primitiveKindName(kind)];
+        Record &record = recordOf(kind);
         ++record.attempts;
         if (found)
             return;
@@ -25,11 +34,11 @@ namespace ompl_mm
     void PrimitiveTally::motion(PrimitiveKind kind, PrimitiveKind own, bool free, std::string_view bodyA,
                                 std::string_view bodyB)
     {
-        Record &record = records_[primitiveKindName(kind)];
+        Record &record = recordOf(kind);
         ++record.motions;
         if (free)
         {
-            ++records_[primitiveKindName(own)].completed;
+            ++recordOf(own).completed;
             return;
         }
         ++record.stopped;
