@@ -110,6 +110,8 @@ namespace
         ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         ompl_mm::ManipulationSetup &setup =
             apps::keepUntilExit(std::make_unique<ompl_mm::ManipulationSetup>(scene));
+        if (setup.goalFault())  // the scene is the app's input: an impossible goal is an input error
+            throw *setup.goalFault();
         if (options.common.planner != scene.planner)
             setup.selectPlanner(options.common.planner);
         setup.applyParameters(options.common.parameterSettings());

@@ -85,6 +85,8 @@ namespace
         ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         ompl_phys::PhysicsSetup &setup =
             apps::keepUntilExit(std::make_unique<ompl_phys::PhysicsSetup>(scene));
+        if (setup.goalFault())  // the scene is the app's input: an impossible goal is an input error
+            throw *setup.goalFault();
         setup.setPlannerByName(options.common.planner);
         ompl_core::applyParameters(*setup.getPlanner(), options.common.parameterSettings());
         if (options.common.listParams)

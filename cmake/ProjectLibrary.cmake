@@ -8,7 +8,6 @@ function(ompl_project_library name)
   target_include_directories(${name} PUBLIC
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
-  target_include_directories(${name} SYSTEM PUBLIC ${OMPL_INCLUDE_DIRS})
   target_compile_options(${name} PRIVATE ${OMPL_MM_WARNINGS})
   set_target_properties(${name} PROPERTIES UNITY_BUILD ${OMPL_MM_UNITY_BUILD})
   install(TARGETS ${name} EXPORT ${name}Targets

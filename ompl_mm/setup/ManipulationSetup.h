@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ompl_core/io/InputError.h"
 #include "ompl_core/run/ParameterSetting.h"
 #include "ompl_core/run/PlannerRegistry.h"
 #include "ompl_mm/base/ManipulationGoal.h"
@@ -12,6 +13,7 @@
 #include <ompl/geometric/SimpleSetup.h>
 
 #include <cstdint>
+#include <optional>
 
 namespace ompl_mm
 {
@@ -20,7 +22,7 @@ namespace ompl_mm
         start state, the goal, the primitives and the scene's planner (by name from the planner
         registry, with the scene's parameters), and checks the problem before any planning (robot
         start of the right size and inside the limits, objects resting, no collision at the start,
-        a goal that can be reached). Use it like any SimpleSetup: solve(), getSolutionPath(),
+        a goal that can be reached: see goalFault()). Use it like any SimpleSetup: solve(), getSolutionPath(),
         Benchmark. The setup shares the model, space, checker, goal and primitives with the pieces
         that use them; they live as long as the last holder. */
     class ManipulationSetup : public ompl::geometric::SimpleSetup
@@ -28,10 +30,23 @@ namespace ompl_mm
     public:
         /** Wires the scene (copied into the model, so it need not outlive the setup); factory
             builds the scene's primitives: pass your own to add primitive types.
-            @throws ompl_core::InputError naming the scene file and line of any fault in the problem
-            (URDF, tool link, start, goal, primitives), an unknown planner or a bad planner
-            parameter. */
+            @throws ompl_core::InputError naming the scene file and line of any fault in the input
+            (URDF, tool link, start, primitives), an unknown planner or a bad planner parameter. A
+            goal that cannot be reached does not throw: see goalFault(). */
         explicit ManipulationSetup(const Scene &scene, const PrimitiveFactory &factory = PrimitiveFactory());
+
+        /** Why the scene's goal cannot be reached from its start, found before planning (ProblemCheck:
+            goal poses in collision or overlapping, an object that no primitive of the scene can
+            move to its goal), with the scene line of the goal; nothing when no such fault was
+            found. While the setup's goal is the problem's goal, solve() then returns at once
+            ompl_core::infeasibleStatus() (INFEASIBLE in OMPL 1.6 and later, INVALID_GOAL in 1.5)
+            and logs the fault. Programs that treat the scene as input throw it instead. */
+        const std::optional<ompl_core::InputError> &goalFault() const { return goalFault_; }
+
+        /** SimpleSetup::solve, or at once the status of goalFault() when there is one. */
+        ompl::base::PlannerStatus solve(double time = 1.0) override;
+        /** SimpleSetup::solve, or at once the status of goalFault() when there is one. */
+        ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
 
         /** The planners that can plan on a ManipulationSetup: "mopl", and OMPL's "rrtconnect",
             "rrt" and "est", which move the robot alone (their uniform samples keep the objects at
@@ -87,5 +102,6 @@ namespace ompl_mm
         std::shared_ptr<ManipulationValidityChecker> checker_;
         std::shared_ptr<ManipulationGoal> goal_;
         std::vector<PrimitivePtr> primitives_;
+        std::optional<ompl_core::InputError> goalFault_;
     };
 }  // namespace ompl_mm

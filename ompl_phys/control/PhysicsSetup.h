@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ompl_core/io/InputError.h"
 #include "ompl_core/run/PlannerRegistry.h"
 #include "ompl_phys/base/PhysicsStateSpace.h"
 #include "ompl_phys/control/PhysicsStatePropagator.h"
@@ -10,6 +11,7 @@
 #include <ompl/control/SimpleSetup.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,7 +37,7 @@ namespace ompl_phys
         /** Shares scene (the world, space and knowledge keep it alive).
             @pre scene is not null.
             @throws ompl_core::InputError naming the scene file and line when the start breaks a rule or
-            overlaps something, or a fixed body covers the goal.
+            overlaps something (a goal that cannot be reached does not throw: see goalFault()).
             @throws ompl::Exception for a movable prism, which ODE cannot simulate. */
         explicit PhysicsSetup(PhysicsScenePtr scene);
         /** Plans on a copy of scene; throws as the shared form. */
@@ -73,6 +75,18 @@ namespace ompl_phys
             @throws ompl_core::InputError for an unknown name, or a goal bias the planner rejects. */
         void setPlannerByName(const std::string &name);
 
+        /** Why the scene's goal cannot be reached, found before planning (a fixed body covers its
+            centre), with the scene line of the goal; nothing when no such fault was found. While the
+            setup's goal is the problem's goal, solve() then returns at once
+            ompl_core::infeasibleStatus() (INFEASIBLE in OMPL 1.6 and later, INVALID_GOAL in 1.5)
+            and logs the fault. Programs that treat the scene as input throw it instead. */
+        const std::optional<ompl_core::InputError> &goalFault() const { return goalFault_; }
+
+        /** SimpleSetup::solve, or at once the status of goalFault() when there is one. */
+        ompl::base::PlannerStatus solve(double time = 1.0) override;
+        /** SimpleSetup::solve, or at once the status of goalFault() when there is one. */
+        ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+
         /** Solved with an exact solution (solve() also reports approximate ones as solved). */
         bool haveExactSolution() const;
 
@@ -80,11 +94,15 @@ namespace ompl_phys
         explicit PhysicsSetup(std::shared_ptr<PhysicsWorld> world);
         static ompl::control::SpaceInformationPtr spaceInformation(const PhysicsWorld &world);
         void checkStart() const;
+        /** The fault of the scene's goal, as goalFault() gives it. */
+        std::optional<ompl_core::InputError> findGoalFault() const;
 
         std::shared_ptr<PhysicsWorld> world_;
         std::shared_ptr<const ManipulationKnowledge> knowledge_;
         std::shared_ptr<PhysicsStateSpace> space_;
         std::shared_ptr<PhysicsStatePropagator> propagator_;
         std::shared_ptr<RobotGridDecomposition> decomposition_;
+        std::shared_ptr<ompl::base::Goal> goal_;
+        std::optional<ompl_core::InputError> goalFault_;
     };
 }  // namespace ompl_phys

@@ -145,7 +145,7 @@ def check_mopl_log(checks, args, scratch):
                  "mobile_blocked mopl run 3 of 3: solved; 3 solved so far" in err and "s left" in err, err)
     with open(log, encoding="utf-8") as f:
         text = f.read()
-    checks.check("the log names the OMPL version", text.startswith("OMPL version 1.5.2\n"), text[:40])
+    checks.check("the log names the OMPL version", text.startswith(f"OMPL version {args.ompl_version}\n"), text[:40])
     db = os.path.join(scratch, "mopl.db")
     status, out, err = database([log], db)
     checks.check("ompl_benchmark_statistics parses the log without warnings",
@@ -160,7 +160,7 @@ def check_mopl_log(checks, args, scratch):
     scene_logged, version = con.execute("SELECT scene, version FROM experiments").fetchone()
     con.close()
     checks.check("experiment columns hold the scene file and the version",
-                 scene_logged == os.path.normpath(scene) and version == "OMPL 1.5.2", scene_logged, version)
+                 scene_logged == os.path.normpath(scene) and version == f"OMPL {args.ompl_version}", scene_logged, version)
     runs = rows(db, ["seed", "solved", "path_length_m", "iterations", "path_vertices"])
     checks.check("three runs, all solved, with distinct seeds",
                  len(runs) == 3 and all(r[2] == 1 for r in runs) and len({r[1] for r in runs}) == 3, runs)
@@ -287,7 +287,8 @@ def check_user_planner(checks, args, scratch):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    for option in ["--benchmark", "--user-benchmark", "--mm-plan", "--phys-plan", "--scenes", "--scratch"]:
+    for option in ["--benchmark", "--user-benchmark", "--mm-plan", "--phys-plan", "--scenes", "--scratch",
+                   "--ompl-version"]:
         parser.add_argument(option, required=True)
     args = parser.parse_args()
     shutil.rmtree(args.scratch, ignore_errors=True)

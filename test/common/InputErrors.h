@@ -37,6 +37,22 @@ namespace ompl_core::test
         return messageOf<ompl::Exception>(std::forward<F>(f));
     }
 
+    /** The fault a Setup (ManipulationSetup, PhysicsSetup) finds in scene before planning: the
+        InputError message of building it, else the message of its goalFault(), else "". */
+    template <typename Setup, typename Scene>
+    std::string setupFaultOf(const Scene &scene)
+    {
+        std::string goalFault;
+        const std::string built = inputErrorOf(
+            [&]
+            {
+                Setup setup(scene);
+                if (setup.goalFault())
+                    goalFault = setup.goalFault()->what();
+            });
+        return built.empty() ? goalFault : built;
+    }
+
     /** True when text begins with prefix. */
     inline bool startsWith(const std::string &text, const std::string &prefix)
     {

@@ -86,10 +86,11 @@ namespace ompl_mm::test
         space.setObjectPose(state, object, {Eigen::Vector3d(x, y, z), yaw});
     }
 
-    /** The ompl_core::InputError message of building a ManipulationSetup for scene, or "" when it builds. */
+    /** The fault found before planning in scene: the ompl_core::InputError message of building a
+        ManipulationSetup for it, else the message of its goalFault(), else "". */
     inline std::string setupError(const Scene &scene)
     {
-        return inputErrorOf([&] { ManipulationSetup setup(scene); });
+        return ompl_core::test::setupFaultOf<ManipulationSetup>(scene);
     }
 
     /** A fixture with a ManipulationSetup of a scene (MOBILE BLOCKED unless given) and its state space. */

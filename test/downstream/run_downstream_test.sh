@@ -3,17 +3,19 @@
 # test/downstream against it with find_package(ompl_mm), find_package(ompl_phys) and
 # find_package(ompl_bench), plans the installed mobile_blocked.xml and physics/scene1.xml scenes with
 # it, found through the packages' ompl_mm_SCENES_DIR and ompl_phys_SCENES_DIR, and benchmarks a
-# planner the downstream program registers.
-# Usage: run_downstream_test.sh BUILD_DIR SOURCE_DIR SCRATCH_DIR
+# planner the downstream program registers. With OTHER_OMPL_DIR (the CMake folder of an OMPL of
+# another version than the build's), configuring against that OMPL must fail, naming both versions.
+# Usage: run_downstream_test.sh BUILD_DIR SOURCE_DIR SCRATCH_DIR [OTHER_OMPL_DIR]
 set -u
 
-if [ $# -ne 3 ]; then
-    echo "usage: $0 BUILD_DIR SOURCE_DIR SCRATCH_DIR" >&2
+if [ $# -lt 3 ] || [ $# -gt 4 ]; then
+    echo "usage: $0 BUILD_DIR SOURCE_DIR SCRATCH_DIR [OTHER_OMPL_DIR]" >&2
     exit 2
 fi
 build_dir=$1
 source_dir=$2
 scratch=$3
+other_ompl=${4:-}
 prefix=$scratch/prefix
 downstream_build=$scratch/build
 
@@ -74,5 +76,16 @@ CFG
 status=$?
 [ $status -eq 0 ] || fail "downstream_benchmark exited with $status (expected 0)"
 grep -q "^control_greedy_rrt$" "$scratch/own.log" || fail "$scratch/own.log has no control_greedy_rrt"
+
+if [ -n "$other_ompl" ]; then
+    echo "== configure against another OMPL ($other_ompl): must fail at configure time"
+    output=$(cmake -S "$source_dir/test/downstream" -B "$scratch/build-other" -DCMAKE_PREFIX_PATH="$prefix" \
+        -Dompl_DIR="$other_ompl" -DCMAKE_BUILD_TYPE=Release 2>&1)
+    status=$?
+    echo "$output" | tail -n 12
+    [ $status -ne 0 ] || fail "configuring against $other_ompl succeeded"
+    echo "$output" | tr '\n' ' ' | grep -q "was built against OMPL" ||
+        fail "configuring against $other_ompl failed without naming the OMPL the package was built with"
+fi
 
 echo "downstream test passed"

@@ -25,6 +25,8 @@ namespace ompl_mm
     {
         ompl_core::reseedOmpl(seed);
         auto setup = std::make_unique<ManipulationSetup>(scene_);
+        if (setup->goalFault())  // the scene is the benchmark's input
+            throw *setup->goalFault();
         if (planner.type != scene_.planner)
         {
             ManipulationSetup::plannerRegistry().require(planner.type, planner.where);

@@ -1,5 +1,6 @@
 #include "ompl_mm/geometric/ManipulationSimplifier.h"
 
+#include "ompl_core/compat/OmplVersions.h"
 #include "ompl_mm/base/StepTermination.h"
 
 #include <ompl/geometric/PathSimplifier.h>
@@ -322,7 +323,7 @@ namespace ompl_mm
         // shortcuts while they find some; the steps' motion checks stop at ptc (the caller's
         // TerminationScope), so a step under way when it becomes true ends soon after
         for (unsigned int k = 0; k < SHORTCUT_PASSES && !ptc; ++k)
-            if (!simplifier.shortcutPath(shorter))
+            if (!ompl_core::partialShortcut(simplifier, shorter))
                 break;
         if (!ptc)
             simplifier.smoothBSpline(shorter, 3, shorter.length() / 100.0);

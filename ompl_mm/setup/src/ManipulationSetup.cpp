@@ -1,6 +1,7 @@
 #include "ompl_mm/setup/ManipulationSetup.h"
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/run/InfeasibleGoal.h"
 #include "ompl_mm/base/ManipulationStateSampler.h"
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 #include "ompl_mm/setup/ProblemCheck.h"
@@ -53,9 +54,30 @@ namespace ompl_mm
         for (const PrimitivePtr &primitive : primitives_)
             primitive->setStateValidityChecker(checker_);
         si_->setMotionValidator(std::make_shared<ManipulationMotionValidator>(si_, primitives_));
-        ProblemCheck(*space_).checkGoal(getProblemDefinition()->getStartState(0), primitives_);
+        try
+        {
+            ProblemCheck(*space_).checkGoal(getProblemDefinition()->getStartState(0), primitives_);
+        }
+        catch (const ompl_core::InputError &fault)
+        {
+            goalFault_ = fault;
+        }
         setPlannerByName(scene.planner);
         applyParameters(scene.plannerParams);
+    }
+
+    ompl::base::PlannerStatus ManipulationSetup::solve(double time)
+    {
+        if (goalFault_ && getGoal() == goal_)
+            return lastStatus_ = ompl_core::infeasibleGoal("ManipulationSetup", *goalFault_);
+        return SimpleSetup::solve(time);
+    }
+
+    ompl::base::PlannerStatus ManipulationSetup::solve(const ompl::base::PlannerTerminationCondition &ptc)
+    {
+        if (goalFault_ && getGoal() == goal_)
+            return lastStatus_ = ompl_core::infeasibleGoal("ManipulationSetup", *goalFault_);
+        return SimpleSetup::solve(ptc);
     }
 
     void ManipulationSetup::applyParameters(const std::vector<ompl_core::ParameterSetting> &settings)

@@ -24,6 +24,8 @@ namespace ompl_phys
     {
         ompl_core::reseedOmpl(seed);
         auto setup = std::make_unique<PhysicsSetup>(scene_);
+        if (setup->goalFault())  // the scene is the benchmark's input
+            throw *setup->goalFault();
         PhysicsSetup::plannerRegistry().require(planner.type, planner.where);
         setup->setPlannerByName(planner.type);
         ompl_core::applyParameters(*setup->getPlanner(),

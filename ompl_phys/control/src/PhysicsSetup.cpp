@@ -2,6 +2,7 @@
 
 #include "ompl_core/io/InputError.h"
 #include "ompl_core/io/TextFormat.h"
+#include "ompl_core/run/InfeasibleGoal.h"
 #include "ompl_core/run/ParameterSetting.h"
 #include "ompl_phys/base/PhysicsGoal.h"
 #include "ompl_phys/base/PhysicsValidityChecker.h"
@@ -78,7 +79,9 @@ namespace ompl_phys
         ompl::base::ScopedState<> start(space_);
         space_->writeState(world_->startStates(), start.get());
         setStartState(start);
-        setGoal(std::make_shared<PhysicsGoal>(si_, knowledge_, world_->startStates()));
+        goal_ = std::make_shared<PhysicsGoal>(si_, knowledge_, world_->startStates());
+        setGoal(goal_);
+        goalFault_ = findGoalFault();
         setPlannerByName("kpiece");
     }
 
@@ -104,9 +107,29 @@ namespace ompl_phys
             message << "bodies overlap at the start (" << depth << " m deep)";
             throw ompl_core::InputError(s.robot.where, message.str());
         }
+    }
+
+    std::optional<ompl_core::InputError> PhysicsSetup::findGoalFault() const
+    {
         for (std::size_t body : knowledge_->fixedBodiesOnGoal())
-            throw ompl_core::InputError(s.goal.where, "the goal cannot be reached: fixed body '" +
-                                                          s.bodies[body].name + "' covers its centre");
+            return ompl_core::InputError(world_->scene().goal.where,
+                                         "the goal cannot be reached: fixed body '" +
+                                             world_->scene().bodies[body].name + "' covers its centre");
+        return std::nullopt;
+    }
+
+    ompl::base::PlannerStatus PhysicsSetup::solve(double time)
+    {
+        if (goalFault_ && getGoal() == goal_)
+            return last_status_ = ompl_core::infeasibleGoal("PhysicsSetup", *goalFault_);
+        return oc::SimpleSetup::solve(time);
+    }
+
+    ompl::base::PlannerStatus PhysicsSetup::solve(const ompl::base::PlannerTerminationCondition &ptc)
+    {
+        if (goalFault_ && getGoal() == goal_)
+            return last_status_ = ompl_core::infeasibleGoal("PhysicsSetup", *goalFault_);
+        return oc::SimpleSetup::solve(ptc);
     }
 
     ompl_core::PlannerRegistry<PhysicsSetup> &PhysicsSetup::plannerRegistry()

@@ -2,6 +2,7 @@
 // request (which simplifies every solution), SimpleSetup::simplifySolution and PathGeometric::check.
 // Every simplified path is re-checked independently (common/PlanarRecheck.h).
 #include "common/PlanarRecheck.h"
+#include "ompl_core/compat/OmplVersions.h"
 
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
@@ -123,9 +124,9 @@ TEST(OmplTools, OurSmoothingAfterOMPLsKeepsThePathValidAndShortensIt)
 
 TEST(OmplTools, EveryStepOfOMPLsSimplifierKeepsThePathValid)
 {
-    // each step of PathSimplifier, in changing orders and from several simplifier seeds, on MOPL's
-    // paths: B-spline smoothing subdivides motions without checking the new states, which is safe
-    // only because any part of a valid motion is valid (continuous motion checks)
+    // each step of PathSimplifier (RRT-Rope's too, where OMPL has it), in changing orders and from several
+    // simplifier seeds, on MOPL's paths: B-spline smoothing subdivides motions without checking the new
+    // states, which is safe only because any part of a valid motion is valid (continuous motion checks)
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     const Scene scene = mobileBlockedScene();
     for (unsigned int seed = 1; seed <= 8; ++seed)
@@ -137,26 +138,29 @@ TEST(OmplTools, EveryStepOfOMPLsSimplifierKeepsThePathValid)
                   ompl::base::PlannerStatus::EXACT_SOLUTION);
         const ManipulationPath &solution = setup.manipulationPath();
         ASSERT_TRUE(solution.check());
-        for (unsigned int order = 0; order < 5; ++order)
+        for (unsigned int order = 0; order < 6; ++order)
         {
             ompl::geometric::PathSimplifier simplifier(setup.getSpaceInformation());
             ompl::geometric::PathGeometric path(solution);
             for (unsigned int step = 0; step < 10; ++step)
             {
-                const unsigned int operation = (step + order) % 5;
+                const unsigned int operation = (step + order) % 6;
                 switch (operation)
                 {
                     case 0:
                         simplifier.reduceVertices(path);
                         break;
                     case 1:
-                        simplifier.shortcutPath(path);
+                        ompl_core::partialShortcut(simplifier, path);
                         break;
                     case 2:
                         simplifier.smoothBSpline(path, 3, path.length() / 100.0);
                         break;
                     case 3:
                         simplifier.collapseCloseVertices(path);
+                        break;
+                    case 4:
+                        ompl_core::ropeShortcut(simplifier, path);
                         break;
                     default:
                         EXPECT_TRUE(path.checkAndRepair(100).first);

@@ -1,6 +1,12 @@
 // Tests for ProblemCheck through ManipulationSetup: every kind of impossible problem that can be
 // decided before planning is reported at its scene line, and the problems just short of it build.
 #include "common/MobileBlocked.h"
+#include "ompl_core/compat/OmplVersions.h"
+
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/goals/GoalState.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/util/Console.h>
 
 #include <gtest/gtest.h>
 
@@ -92,6 +98,26 @@ TEST(ProblemCheck, ObjectGoalsOverlappingEachOtherAreReported)
             ": the goal cannot be reached: object 'obj1' and object 'obj3' collide at their goal poses");
     scene.objectGoals[1].position[0] = -1.31;  // 0.41 from obj3's goal
     EXPECT_EQ(setupError(scene), "");
+}
+
+TEST(ProblemCheck, AnImpossibleGoalIsAnsweredWithOMPLsInfeasibleStatusWithoutPlanning)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    ManipulationSetup setup(obj3GoalAt(-1.0, 0.0));
+    ASSERT_TRUE(setup.goalFault());
+    EXPECT_EQ(setup.solve(10.0), ompl_core::infeasibleStatus());
+    EXPECT_EQ(setup.solve(ompl::base::IterationTerminationCondition(100)), ompl_core::infeasibleStatus());
+    EXPECT_EQ(setup.getLastPlannerStatus(), ompl_core::infeasibleStatus());
+    EXPECT_EQ(setup.mopl()->statistics().iterations, 0u) << "MOPL ran";
+    // a goal of the program's own is planned for
+    setup.setPlannerByName("rrtconnect");
+    auto start = std::make_shared<ompl::base::GoalState>(setup.getSpaceInformation());
+    start->setState(setup.getProblemDefinition()->getStartState(0));
+    setup.setGoal(start);
+    EXPECT_NE(setup.solve(ompl::base::IterationTerminationCondition(10)), ompl_core::infeasibleStatus());
+    ompl::base::PlannerData data(setup.getSpaceInformation());
+    setup.getPlannerData(data);
+    EXPECT_GT(data.numVertices(), 0u) << "the planner did not run";
 }
 
 TEST(ProblemCheck, AGoalThatNeedsAnObjectMovedWithoutAPrimitiveThatMovesItIsReported)

@@ -3,6 +3,7 @@
 // bad planners and bad starts or goals are rejected.
 #include "ompl_phys/control/PhysicsSetup.h"
 
+#include "ompl_core/compat/OmplVersions.h"
 #include "ompl_phys/base/RobotProjection.h"
 #include "ompl_phys/common/PhysicsTestSupport.h"
 #include "ompl_phys/control/PDSTPlanner.h"
@@ -10,6 +11,7 @@
 #include "ompl_phys/io/PhysicsRunResult.h"
 #include "ompl_phys/metrics/TrajectoryMetrics.h"
 
+#include <ompl/base/goals/GoalState.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/control/PlannerData.h>
 #include <ompl/control/planners/rrt/RRT.h>
@@ -333,14 +335,20 @@ TEST(PhysicsSetup, SameSeedGivesTheSamePlan)
 
 namespace
 {
-    /** The ompl_core::InputError message of building a PhysicsSetup for the small scene with line `line`
-     * replaced. */
-    std::string setupErrorWithLine(int line, const std::string &text)
+    /** The small scene with line `line` replaced. */
+    PhysicsScene smallSceneWithLine(int line, const std::string &text)
     {
         std::vector<std::string> lines = smallSceneLines();
         lines.at(static_cast<std::size_t>(line - 1)) = text;
-        const PhysicsScene scene = parsePhysicsScene(joinLines(lines), "test.xml");
-        return inputErrorOf([&] { PhysicsSetup setup(scene); });
+        return parsePhysicsScene(joinLines(lines), "test.xml");
+    }
+
+    /** The fault found before planning in the small scene with line `line` replaced: the
+     * ompl_core::InputError message of building a PhysicsSetup for it, else the message of its
+     * goalFault(), else "". */
+    std::string setupErrorWithLine(int line, const std::string &text)
+    {
+        return ompl_core::test::setupFaultOf<PhysicsSetup>(smallSceneWithLine(line, text));
     }
 }  // namespace
 
@@ -461,6 +469,29 @@ TEST(PhysicsSetup, GoalJustCoveredOrFreeOfAFixedBody)
             7,
             R"(  <body name="wall" kind="fixed"><origin xyz="0.8 -0.619 0.1"/><box size="1 0.2 0.2"/></body>)"),
         "");
+}
+
+TEST(PhysicsSetup, AGoalCoveredByAFixedBodyIsAnsweredWithOMPLsInfeasibleStatusWithoutPlanning)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    PhysicsSetup setup(smallSceneWithLine(
+        7,
+        R"(  <body name="wall" kind="fixed"><origin xyz="0.8 -0.621 0.1"/><box size="1 0.2 0.2"/></body>)"));
+    ASSERT_TRUE(setup.goalFault());
+    EXPECT_EQ(setup.solve(10.0), ompl_core::infeasibleStatus());
+    EXPECT_EQ(setup.solve(ompl::base::IterationTerminationCondition(100)), ompl_core::infeasibleStatus());
+    EXPECT_EQ(setup.getLastPlannerStatus(), ompl_core::infeasibleStatus());
+    EXPECT_FALSE(setup.haveSolutionPath());
+    ompl::control::PlannerData data(setup.getSpaceInformation());
+    setup.getPlannerData(data);
+    EXPECT_EQ(data.numVertices(), 0u) << "the planner ran";
+    // a goal of the program's own is planned for
+    auto start = std::make_shared<ompl::base::GoalState>(setup.getSpaceInformation());
+    start->setState(setup.getProblemDefinition()->getStartState(0));
+    setup.setGoal(start);
+    EXPECT_NE(setup.solve(ompl::base::IterationTerminationCondition(10)), ompl_core::infeasibleStatus());
+    setup.getPlannerData(data);
+    EXPECT_GT(data.numVertices(), 0u) << "the planner did not run";
 }
 
 TEST(PhysicsSetup, RunResultReadsPdstTreeWithoutPropagating)
