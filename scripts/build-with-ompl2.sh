@@ -13,10 +13,16 @@ cd "$(dirname "$0")/.."
 root=$(pwd)
 jobs=$(nproc 2>/dev/null || echo 2)
 run_tests=1
-if [ "${1:-}" = "--no-test" ]; then
-  run_tests=0
-  shift
-fi
+case "${1:-}" in
+  -h | --help)
+    sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'
+    exit 0
+    ;;
+  --no-test)
+    run_tests=0
+    shift
+    ;;
+esac
 
 scripts/install-deps.sh
 
@@ -33,6 +39,14 @@ install_ompl2() { # into $cached, from $shared
   local codename arch
   codename=$(. /etc/os-release 2>/dev/null && echo "${VERSION_CODENAME:-}")
   arch=$(dpkg --print-architecture 2>/dev/null || true)
+  if ! [ -f "$source" ] && ! [ -f "$prebuilt" ]; then
+    cat >&2 <<EOF
+$0: no OMPL 2 to build against. Give one of:
+  - OMPL2_PREFIX=<prefix of an installed OMPL 2> (the folder with include/, lib/ and share/ompl/cmake);
+  - OMPL 2.0.2's source as $source (or OMPL2_SHARED=<folder with ompl-2.0.2-src.tar.gz>).
+EOF
+    exit 2
+  fi
   mkdir -p "$work"
   rm -rf "$cached" "$work/ompl-src" "$work/ompl-build"
   if [ -f "$prebuilt" ] && [ "$codename" = bookworm ] && [ "$arch" = amd64 ]; then
@@ -48,11 +62,7 @@ install_ompl2() { # into $cached, from $shared
     cmake --install "$work/ompl-build" --prefix "$cached" > /dev/null
     rm -rf "$work/ompl-src" "$work/ompl-build"
   else
-    cat >&2 <<EOF
-$0: no OMPL 2 to build against. Give one of:
-  - OMPL2_PREFIX=<prefix of an installed OMPL 2> (the folder with include/, lib/ and share/ompl/cmake);
-  - OMPL 2.0.2's source as $source (or OMPL2_SHARED=<folder with ompl-2.0.2-src.tar.gz>).
-EOF
+    echo "$0: $prebuilt is for Debian bookworm amd64 only, and there is no $source to build" >&2
     exit 2
   fi
 }
