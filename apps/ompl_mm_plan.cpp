@@ -2,27 +2,22 @@
 // Exit codes: 0 solved, 1 not solved, 2 bad input.
 #include "common/AppSupport.h"
 #include "common/KeepUntilExit.h"
-#include "common/PhaseTimes.h"
 #include "common/RunTermination.h"
 #include "ompl_core/io/OutputFile.h"
-#include "ompl_core/run/GlobalSeed.h"
-#include "ompl_mm/base/StepTermination.h"
-#include "ompl_mm/geometric/ManipulationMotionValidator.h"
-#include "ompl_mm/io/ManipulationRunResult.h"
+#include "ompl_core/run/PhaseTimes.h"
 #include "ompl_mm/io/PathFile.h"
+#include "ompl_mm/io/PlanningRun.h"
 #include "ompl_mm/io/SceneHtml.h"
 #include "ompl_mm/io/SceneSvg.h"
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
 
 #include <ompl/util/Console.h>
-#include <ompl/util/RandomNumbers.h>
 
 #include <boost/program_options.hpp>
 
 #include <iomanip>
 #include <iostream>
-#include <optional>
 #include <sstream>
 
 namespace po = boost::program_options;
@@ -85,62 +80,33 @@ namespace
             std::cout << "  never succeeded: " << line << "\n";
     }
 
-    /** Solves within termination, whatever the planner: MOPL polls it within every step, and
-        the motion validator's checks stop at it too (OMPL's planners call checkMotion between
-        their polls, and one continuous check near triangle meshes can take a tenth of a second).
-        Here, not in ManipulationSetup::solve: the app's condition is a time limit, while a library
-        user's may count its evaluations (OMPL's IterationTerminationCondition), which the checks'
-        polls would use up. */
-    void solveWithin(ompl_mm::ManipulationSetup &setup,
-                     const ompl::base::PlannerTerminationCondition &termination)
-    {
-        const ompl_mm::StepTermination inner(termination);
-        std::optional<ompl_mm::ManipulationMotionValidator::TerminationScope> bounded;
-        if (auto validator = std::dynamic_pointer_cast<ompl_mm::ManipulationMotionValidator>(
-                setup.getSpaceInformation()->getMotionValidator()))
-            bounded.emplace(*validator, inner.condition());
-        setup.solve(termination);
-    }
-
     int run(const Options &options)
     {
-        apps::PhaseTimes phases;
+        ompl_core::PhaseTimes loading;
         const ompl_mm::Scene scene = ompl_mm::loadScene(options.common.scene);
-        phases.load = phases.lap();
-        ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
-        ompl_mm::ManipulationSetup &setup =
-            apps::keepUntilExit(std::make_unique<ompl_mm::ManipulationSetup>(scene));
-        if (setup.goalFault())  // the scene is the app's input: an impossible goal is an input error
-            throw *setup.goalFault();
-        if (options.common.planner != scene.planner)
-            setup.selectPlanner(options.common.planner);
-        setup.applyParameters(options.common.parameterSettings());
+        ompl_mm::PlanningRequest request;
+        request.planner = options.common.planner;
+        request.seed = static_cast<std::uint32_t>(options.common.seed);
+        request.timeLimit = options.common.timeLimit;
+        request.parameters = options.common.parameterSettings();
+        ompl_mm::PlanningRun &run =
+            apps::keepUntilExit(std::make_unique<ompl_mm::PlanningRun>(scene, request, loading.lap()));
+        ompl_mm::ManipulationSetup &setup = run.setup();
         if (options.common.listParams)
         {
             options.common.printParameters(*setup.getPlanner());
             return 0;
         }
-        if (const std::shared_ptr<ompl_mm::MOPL> mopl = setup.mopl())
-            mopl->setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
         // open the outputs first: a bad path should not cost a whole planning run
         ompl_core::OutputFile json(options.common.json);
         ompl_core::OutputFile svg(options.common.svg);
         ompl_core::OutputFile html(options.common.html);
         ompl_core::OutputFile path(options.path);
+        run.solve(apps::interruptCondition());
 
-        const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
-        setup.setup();
-        ompl_core::reseedOmpl(static_cast<std::uint32_t>(options.common.seed));  // as the benchmark tool does
-        phases.setup = phases.lap();
-        solveWithin(setup, apps::runTermination(timeLimit));
-        phases.solve = phases.lap();
-
-        // the checks: one re-check of the path (the JSON reports the same), the summary, the files;
-        // the JSON last, so that its "checks" phase holds all of them but its own writing
-        const bool solved = setup.getProblemDefinition()->hasExactSolution();
-        const bool pathValid = solved && setup.manipulationPath().check();
-        if (solved && !pathValid)
-            OMPL_ERROR("ompl_mm_plan: the solution failed OMPL's path re-check");
+        // the checks: the run's re-check of the path, the summary, the files; the JSON last, so
+        // that its "checks" phase holds all of them but its own writing
+        const bool solved = run.solved();
         printSummary(scene, setup, options);
         if (svg.isOpen())
         {
@@ -162,17 +128,12 @@ namespace
         }
         if (json.isOpen())
         {
-            ompl_core::RunResult result =
-                ompl_mm::manipulationRunResult(options.common.describe(scene.name, timeLimit), setup,
-                                               solved ? std::optional<bool>(pathValid) : std::nullopt);
-            phases.checks = phases.sinceLap();
-            result.details.addRecord("phases_s", phases.record());
-            ompl_core::writeRunJson(json.stream(), result);
+            ompl_core::writeRunJson(json.stream(), run.record());
             json.commit();
         }
-        phases.checks = phases.lap();
+        run.phases().checks = run.phases().lap();
         if (options.common.verbose)
-            phases.print(std::cout);
+            run.phases().print(std::cout);
         return solved ? 0 : 1;
     }
 }  // namespace

@@ -3,25 +3,19 @@
 // Exit codes: 0 solved, 1 not solved, 2 bad input.
 #include "common/AppSupport.h"
 #include "common/KeepUntilExit.h"
-#include "common/PhaseTimes.h"
 #include "common/RunTermination.h"
 #include "ompl_core/io/OutputFile.h"
-#include "ompl_core/run/GlobalSeed.h"
+#include "ompl_core/run/PhaseTimes.h"
 #include "ompl_phys/control/PathSimulation.h"
 #include "ompl_phys/control/PhysicsSetup.h"
 #include "ompl_phys/io/PhysicsPathFile.h"
-#include "ompl_phys/io/PhysicsRunResult.h"
+#include "ompl_phys/io/PhysicsPlanningRun.h"
 #include "ompl_phys/io/PhysicsSceneHtml.h"
 #include "ompl_phys/io/PhysicsSceneSvg.h"
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
 
-#include <ompl/util/Console.h>
-
-#include <ompl/util/RandomNumbers.h>
-
 #include <iomanip>
 #include <iostream>
-#include <optional>
 
 namespace po = boost::program_options;
 
@@ -79,16 +73,16 @@ namespace
 
     int run(const Options &options)
     {
-        apps::PhaseTimes phases;
+        ompl_core::PhaseTimes loading;
         const ompl_phys::PhysicsScene scene = ompl_phys::loadPhysicsScene(options.common.scene);
-        phases.load = phases.lap();
-        ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(options.common.seed));
-        ompl_phys::PhysicsSetup &setup =
-            apps::keepUntilExit(std::make_unique<ompl_phys::PhysicsSetup>(scene));
-        if (setup.goalFault())  // the scene is the app's input: an impossible goal is an input error
-            throw *setup.goalFault();
-        setup.setPlannerByName(options.common.planner);
-        ompl_core::applyParameters(*setup.getPlanner(), options.common.parameterSettings());
+        ompl_phys::PhysicsPlanningRequest request;
+        request.planner = options.common.planner;
+        request.seed = static_cast<std::uint32_t>(options.common.seed);
+        request.timeLimit = options.common.timeLimit;
+        request.parameters = options.common.parameterSettings();
+        ompl_phys::PhysicsPlanningRun &run = apps::keepUntilExit(
+            std::make_unique<ompl_phys::PhysicsPlanningRun>(scene, request, loading.lap()));
+        ompl_phys::PhysicsSetup &setup = run.setup();
         if (options.common.listParams)
         {
             options.common.printParameters(*setup.getPlanner());
@@ -99,39 +93,22 @@ namespace
         ompl_core::OutputFile svg(options.common.svg);
         ompl_core::OutputFile html(options.common.html);
         ompl_core::OutputFile path(options.path);
+        run.solve(apps::interruptCondition());
 
-        const double timeLimit = options.common.timeLimit > 0.0 ? options.common.timeLimit : scene.timeLimit;
-        setup.setup();
-        ompl_core::reseedOmpl(static_cast<std::uint32_t>(options.common.seed));  // as the benchmark tool does
-        phases.setup = phases.lap();
-        setup.solve(apps::runTermination(timeLimit));
-        phases.solve = phases.lap();
-
-        // the checks: the re-simulation of the solution, the summary, the files; the JSON last, so
-        // that its "checks" phase holds all of them but its own writing
-        const bool solved = setup.haveExactSolution();
-        std::optional<ompl_phys::SimulatedPath> simulated;
-        if (solved)
-        {
-            simulated = ompl_phys::simulatePath(setup, setup.getSolutionPath());
-            if (!simulated->reachesGoal)
-                OMPL_ERROR("ompl_phys_plan: the re-simulated solution does not reach the goal (%s)",
-                           ompl_phys::violationName(simulated->violation));
-        }
-        const ompl_phys::SimulatedPath *result = simulated ? &*simulated : nullptr;
+        // the checks: the run's re-simulation of the solution, the summary, the files; the JSON
+        // last, so that its "checks" phase holds all of them but its own writing
+        const ompl_phys::SimulatedPath *result = run.simulated();
         printSummary(setup, options, result);
+        const std::string title =
+            scene.name + " · " + options.common.planner + " · seed " + std::to_string(options.common.seed);
         if (svg.isOpen())
         {
-            ompl_phys::writePhysicsSceneSvg(svg.stream(), setup, result,
-                                            scene.name + " · " + options.common.planner + " · seed " +
-                                                std::to_string(options.common.seed));
+            ompl_phys::writePhysicsSceneSvg(svg.stream(), setup, result, title);
             svg.commit();
         }
         if (html.isOpen())
         {
-            ompl_phys::writePhysicsSceneHtml(html.stream(), setup, result,
-                                             scene.name + " · " + options.common.planner + " · seed " +
-                                                 std::to_string(options.common.seed));
+            ompl_phys::writePhysicsSceneHtml(html.stream(), setup, result, title);
             html.commit();
         }
         if (path.isOpen())
@@ -142,17 +119,13 @@ namespace
         }
         if (json.isOpen())
         {
-            ompl_core::RunResult record =
-                ompl_phys::physicsRunResult(options.common.describe(scene.name, timeLimit), setup, result);
-            phases.checks = phases.sinceLap();
-            record.details.addRecord("phases_s", phases.record());
-            ompl_core::writeRunJson(json.stream(), record);
+            ompl_core::writeRunJson(json.stream(), run.record());
             json.commit();
         }
-        phases.checks = phases.lap();
+        run.phases().checks = run.phases().lap();
         if (options.common.verbose)
-            phases.print(std::cout);
-        return solved ? 0 : 1;
+            run.phases().print(std::cout);
+        return run.solved() ? 0 : 1;
     }
 }  // namespace
 

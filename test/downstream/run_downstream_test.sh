@@ -84,7 +84,7 @@ if [ -n "$other_ompl" ]; then
     status=$?
     echo "$output" | tail -n 12
     [ $status -ne 0 ] || fail "configuring against $other_ompl succeeded"
-    echo "$output" | tr '\n' ' ' | grep -q "was built against OMPL" ||
+    echo "$output" | tr -s ' \n' ' ' | grep -q "was built against OMPL" ||
         fail "configuring against $other_ompl failed without naming the OMPL the package was built with"
 fi
 

@@ -1,6 +1,6 @@
-/* Where a run of an app spends its wall time: loading the scene, setting up the problem, solving
+/* Where a planning run spends its wall time: loading the scene, setting up the problem, solving
    (the planner's time limit applies here) and the checks and outputs after it, reported in the
-   JSON ("phases_s") and with --verbose. */
+   apps' JSON ("phases_s") and with --verbose. */
 #pragma once
 
 #include "ompl_core/run/RunRecord.h"
@@ -9,7 +9,7 @@
 #include <iomanip>
 #include <ostream>
 
-namespace apps
+namespace ompl_core
 {
     /** Wall-clock seconds of the phases of one run, each measured by lap() from the end of the
         one before (the first from construction). */
@@ -33,9 +33,9 @@ namespace apps
         double sinceLap() const { return std::chrono::duration<double>(Clock::now() - lapStart_).count(); }
 
         /** The phases as the JSON's "phases_s" record: load, setup, solve, checks. */
-        ompl_core::RunRecord record() const
+        RunRecord record() const
         {
-            ompl_core::RunRecord phases;
+            RunRecord phases;
             phases.addNumber("load", load)
                 .addNumber("setup", setup)
                 .addNumber("solve", solve)
@@ -54,4 +54,4 @@ namespace apps
         using Clock = std::chrono::steady_clock;
         Clock::time_point lapStart_{Clock::now()};
     };
-}  // namespace apps
+}  // namespace ompl_core

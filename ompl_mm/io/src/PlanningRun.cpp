@@ -1,0 +1,73 @@
+#include "ompl_mm/io/PlanningRun.h"
+
+#include "ompl_core/run/GlobalSeed.h"
+#include "ompl_core/run/TimeLimit.h"
+#include "ompl_mm/base/StepTermination.h"
+#include "ompl_mm/geometric/ManipulationMotionValidator.h"
+#include "ompl_mm/io/ManipulationRunResult.h"
+
+#include <ompl/util/Console.h>
+
+namespace ompl_mm
+{
+    PlanningRun::PlanningRun(const Scene &scene, PlanningRequest request, double loadSeconds)
+        : SetupRun(std::move(request), loadSeconds)
+    {
+        if (request_.planner.empty())
+            request_.planner = scene.planner;
+        ompl_core::reseedOmpl(request_.seed);
+        setup_ = std::make_unique<ManipulationSetup>(scene);
+        if (setup_->goalFault())  // the scene is the run's input: an impossible goal is an input error
+            throw *setup_->goalFault();
+        if (request_.planner != scene.planner)
+            setup_->selectPlanner(request_.planner);
+        setup_->applyParameters(request_.parameters);
+        if (const std::shared_ptr<MOPL> mopl = setup_->mopl())
+            mopl->setSeed(static_cast<std::uint_fast32_t>(request_.seed));
+    }
+
+    double PlanningRun::timeLimit() const
+    {
+        return request_.timeLimit > 0.0 ? request_.timeLimit : setup_->model()->scene().timeLimit;
+    }
+
+    void PlanningRun::solve(const ompl::base::PlannerTerminationCondition &stop)
+    {
+        setup_->setup();
+        ompl_core::reseedOmpl(request_.seed);  // as the benchmark tool does
+        phases_.setup = phases_.lap();
+        // MOPL polls the condition within every step, and the motion validator's checks stop at it
+        // too (OMPL's planners call checkMotion between their polls, and one continuous check near
+        // triangle meshes can take a tenth of a second). Here, not in ManipulationSetup::solve: this
+        // condition is a time limit, while a library user's may count its evaluations (OMPL's
+        // IterationTerminationCondition), which the checks' polls would use up.
+        const ompl::base::PlannerTerminationCondition termination = ompl_core::timeLimitOr(timeLimit(), stop);
+        {
+            const StepTermination inner(termination);
+            std::optional<ManipulationMotionValidator::TerminationScope> bounded;
+            if (auto validator = std::dynamic_pointer_cast<ManipulationMotionValidator>(
+                    setup_->getSpaceInformation()->getMotionValidator()))
+                bounded.emplace(*validator, inner.condition());
+            setup_->solve(termination);
+        }
+        phases_.solve = phases_.lap();
+        if (solved())
+        {
+            pathValid_ = setup_->manipulationPath().check();
+            if (!*pathValid_)
+                OMPL_ERROR("PlanningRun: the solution failed OMPL's path re-check");
+        }
+    }
+
+    bool PlanningRun::solved() const
+    {
+        return setup_->getProblemDefinition()->hasExactSolution();
+    }
+
+    ompl_core::RunResult PlanningRun::record() const
+    {
+        const ompl_core::RunDescription run{setup_->model()->scene().name, request_.planner, request_.seed,
+                                            timeLimit()};
+        return withPhases(manipulationRunResult(run, *setup_, pathValid_));
+    }
+}  // namespace ompl_mm
