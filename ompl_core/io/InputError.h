@@ -20,5 +20,11 @@ namespace ompl_core
 
         /** A message that names no file (for a command-line option, say). */
         explicit InputError(const std::string &message);
+
+        /** Where the fault is: file and line, or an empty file when it names none. */
+        const SourceLocation &where() const { return where_; }
+
+    private:
+        SourceLocation where_;
     };
 }  // namespace ompl_core

@@ -15,7 +15,7 @@ namespace ompl_core
     }  // namespace
 
     InputError::InputError(const SourceLocation &where, const std::string &message)
-        : ompl::Exception(located(where, message))
+        : ompl::Exception(located(where, message)), where_(where)
     {
     }
 

@@ -1,0 +1,184 @@
+"""Tests for the Python module ompl_mm: plan() gives what ompl_mm_plan gives for the same scene,
+planner, seed and time limit (record and path file), its arrays have the right shapes and values,
+runs are deterministic, bad input raises ompl_core.InputError with file and line, planning
+releases the GIL and Ctrl-C ends it. Run by ctest with the build tree's python folder on PYTHONPATH; the app's and
+scenes' locations come from OMPL_MM_PLAN and OMPL_MM_SCENES."""
+import json
+import os
+import subprocess
+import threading
+import time
+
+import numpy
+import pytest
+
+import ompl_core
+import ompl_mm
+
+SCENES = os.environ["OMPL_MM_SCENES"]
+APP = os.environ["OMPL_MM_PLAN"]
+
+
+def scene_path(name):
+    return os.path.join(SCENES, name + ".xml")
+
+
+def without_times(value):
+    """value with every key that starts with "time" and the phases left out, recursively."""
+    if isinstance(value, dict):
+        return {k: without_times(v) for k, v in value.items() if not k.startswith("time") and k != "phases_s"}
+    return value
+
+
+def app_run(tmp_path, scene, seed, planner="mopl", time_limit=60.0):
+    """The app's JSON record and path file rows for the same run."""
+    record, path = tmp_path / "app.json", tmp_path / "app.txt"
+    subprocess.run([APP, scene_path(scene), "--seed", str(seed), "--planner", planner, "--time-limit",
+                    str(time_limit), "--json", str(record), "--path", str(path)],
+                   check=False, capture_output=True)
+    with open(record, encoding="utf-8") as f:
+        return json.load(f), path
+
+
+@pytest.mark.parametrize("scene,seed", [("mobile_blocked", 3), ("kuka_table", 2)])
+def test_plan_gives_the_apps_record_and_path_for_the_same_seed(tmp_path, scene, seed):
+    result = ompl_mm.plan(ompl_mm.load_scene(scene_path(scene)), seed=seed)
+    app_record, app_path = app_run(tmp_path, scene, seed)
+    assert result.solved and app_record["solved"]
+    assert without_times(result.record) == without_times(app_record)
+    assert list(result.record) == list(app_record), "the keys in the app's order"
+    ours = tmp_path / "ours.txt"
+    result.write_path(ours)
+    assert ours.read_text() == app_path.read_text()
+
+
+def test_the_paths_arrays_match_the_path_file(tmp_path):
+    scene = ompl_mm.load_scene(scene_path("mobile_blocked"))
+    result = ompl_mm.plan(scene, seed=5)
+    path = result.path
+    n = result.record["path_vertices"]
+    assert path.states.shape[0] == n and path.tool.shape == (n, 3)
+    assert len(path.labels) == n - 1
+    assert set(path.objects) == set(scene.objects)
+    file = tmp_path / "path.txt"
+    result.write_path(file)
+    rows = numpy.loadtxt(file, usecols=range(2, 2 + 3 + 2 + 4 * len(scene.objects)), ndmin=2)
+    numpy.testing.assert_allclose(path.tool, rows[:, 0:3], atol=1e-8)
+    numpy.testing.assert_allclose(path.states[:, 0:2], rows[:, 3:5], atol=1e-8)  # the base's x, y
+    for i, name in enumerate(scene.objects):
+        numpy.testing.assert_allclose(path.objects[name], rows[:, 5 + 4 * i:9 + 4 * i], atol=1e-8)
+    kinds = {kind for kind, _ in path.labels}
+    assert kinds <= {"transit", "push", "pickup", "transfer"} and "push" in kinds
+    # the tool path length of the record is the length of the tool's polyline
+    assert numpy.isclose(numpy.linalg.norm(numpy.diff(path.tool, axis=0), axis=1).sum(),
+                         result.record["path_length_m"])
+
+
+def test_the_same_seed_gives_the_same_result():
+    scene = ompl_mm.load_scene(scene_path("mobile_blocked"))
+    first, second = ompl_mm.plan(scene, seed=7), ompl_mm.plan(scene, seed=7)
+    assert without_times(first.record) == without_times(second.record)
+    assert numpy.array_equal(first.path.states, second.path.states)
+
+
+def test_a_scene_path_may_be_given_as_text():
+    assert ompl_mm.plan(scene_path("mobile_blocked"), seed=1).solved
+
+
+def test_pictures_are_written(tmp_path):
+    result = ompl_mm.plan(scene_path("mobile_blocked"), seed=1)
+    result.write_svg(tmp_path / "plan.svg")
+    result.write_html(tmp_path / "plan.html")
+    assert (tmp_path / "plan.svg").read_text().startswith("<?xml") or "<svg" in (tmp_path / "plan.svg").read_text()
+    assert "mobile_blocked · mopl · seed 1" in (tmp_path / "plan.html").read_text()
+
+
+def test_a_missing_scene_file_raises_input_error_naming_it():
+    with pytest.raises(ompl_core.InputError) as error:
+        ompl_mm.load_scene("/no/such/scene.xml")
+    assert "/no/such/scene.xml" in str(error.value)
+
+
+def test_a_malformed_scene_raises_input_error_with_file_and_line(tmp_path):
+    text = open(scene_path("mobile_blocked"), encoding="utf-8").read().replace(
+        '<origin xyz="-1 0 0.5"/>', '<origin xyz="-1 0 0.5abc"/>', 1).replace(
+        'urdf="robots/', f'urdf="{SCENES}/robots/', 1)
+    bad = tmp_path / "bad.xml"
+    bad.write_text(text)
+    line = text[:text.index("0.5abc")].count("\n") + 1
+    with pytest.raises(ompl_core.InputError) as error:
+        ompl_mm.load_scene(str(bad))
+    assert error.value.file == str(bad) and error.value.line == line
+    assert str(error.value).startswith(f"{bad}:{line}: ")
+
+
+def test_a_bad_parameter_raises_input_error_naming_it():
+    scene = ompl_mm.load_scene(scene_path("mobile_blocked"))
+    with pytest.raises(ompl_core.InputError) as error:
+        ompl_mm.plan(scene, params={"vertex_stride": 1})
+    assert "vertex_stride" in str(error.value)
+    with pytest.raises(ompl_core.InputError) as error:
+        ompl_mm.plan(scene, params={"connect_step": -1})
+    assert "connect_step" in str(error.value)
+    with pytest.raises(ompl_core.InputError):
+        ompl_mm.plan(scene, planner="no_such_planner")
+
+
+def test_bad_seeds_and_time_limits_raise_value_error():
+    scene = ompl_mm.load_scene(scene_path("mobile_blocked"))
+    for seed in (0, -1, 2**32):
+        with pytest.raises(ValueError):
+            ompl_mm.plan(scene, seed=seed)
+    with pytest.raises(ValueError):
+        ompl_mm.plan(scene, time_limit=0)
+
+
+def test_a_parameter_set_from_python_reaches_the_planner():
+    scene = ompl_mm.load_scene(scene_path("mobile_blocked"))
+    default, changed = ompl_mm.plan(scene, seed=2), ompl_mm.plan(scene, seed=2, params={"connect_step": 0.1})
+    assert without_times(default.record) != without_times(changed.record)
+
+
+def test_planning_releases_the_gil():
+    """While a 2 s plan runs in another thread (MEKA CLEAN-UP, not solved that soon), this thread
+    keeps running: no pause in its loop comes near the plan's length, as one would if the plan
+    held the GIL."""
+    scene = ompl_mm.load_scene(scene_path("meka_cleanup"))
+    started, results = threading.Event(), []
+
+    def plan():
+        started.set()
+        results.append(ompl_mm.plan(scene, seed=1, time_limit=2.0))
+
+    thread = threading.Thread(target=plan)
+    thread.start()
+    started.wait()
+    longest_pause, last = 0.0, time.perf_counter()
+    while thread.is_alive():
+        now = time.perf_counter()
+        longest_pause, last = max(longest_pause, now - last), now
+    thread.join()
+    assert results and results[0].time_s > 1.5, "the plan ran most of its 2 s"
+    assert longest_pause < 1.0, f"this thread stopped for {longest_pause:.2f} s while the plan ran"
+
+
+def test_ctrl_c_stops_the_plan_and_raises_keyboard_interrupt():
+    """SIGINT during a long plan (MEKA CLEAN-UP, seconds) ends it soon, as KeyboardInterrupt."""
+    script = ("import ompl_mm, sys\n"
+              f"scene = ompl_mm.load_scene({scene_path('meka_cleanup')!r})\n"
+              "print('planning', flush=True)\n"
+              "try:\n"
+              "    ompl_mm.plan(scene, seed=1, time_limit=600)\n"
+              "except KeyboardInterrupt:\n"
+              "    print('interrupted', flush=True)\n"
+              "    sys.exit(3)\n")
+    process = subprocess.Popen([os.environ.get("PYTHON", "/usr/bin/python3"), "-c", script],
+                               stdout=subprocess.PIPE, text=True)
+    assert process.stdout.readline() == "planning\n"
+    time.sleep(1.0)
+    process.send_signal(subprocess.signal.SIGINT)
+    try:
+        out, _ = process.communicate(timeout=60)
+    finally:
+        process.kill()
+    assert process.returncode == 3 and out.endswith("interrupted\n"), out  # OMPL logs to stdout before
