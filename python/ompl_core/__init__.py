@@ -1,4 +1,8 @@
-"""What the Python modules ompl_mm and ompl_phys share: the exception for bad input."""
+"""What the Python modules ompl_mm and ompl_phys share: the exception for bad input, and a
+planning run started from plan()'s arguments."""
+import json
+
+SEED_RANGE = (1, 2**32 - 1)
 
 
 class InputError(ValueError):
@@ -9,3 +13,36 @@ class InputError(ValueError):
         super().__init__(message)
         self.file = file
         self.line = line
+
+
+def solved_run(make_run, scene, planner, seed, time_limit, params):
+    """make_run(scene, planner, seed, time_limit, params as texts) checked, made and solved. Raises
+    ValueError for a seed outside SEED_RANGE or a time limit that is not positive."""
+    if not SEED_RANGE[0] <= seed <= SEED_RANGE[1]:
+        raise ValueError(f"seed must be in [{SEED_RANGE[0]}, {SEED_RANGE[1]}], got {seed}")
+    if not time_limit > 0:
+        raise ValueError(f"time_limit must be positive, got {time_limit}")
+    texts = {name: str(value) for name, value in (params or {}).items()}
+    run = make_run(scene, planner, seed, float(time_limit), texts)
+    run.solve()
+    return run
+
+
+class RunResult:
+    """What both modules' plan() give: `run` (the C++ run), `solved`, `time_s` (the planner's time),
+    `record` (a dict equal to what the app's --json writes) and the app's 3-D page and path file."""
+
+    def __init__(self, run, title):
+        self.run = run
+        self.record = json.loads(run.record_json())
+        self.solved = run.solved
+        self.time_s = self.record["time_s"]
+        self.title = title
+
+    def write_html(self, file):
+        """The 3-D page the app's --html writes."""
+        self.run.write_html(str(file), self.title)
+
+    def write_path(self, file):
+        """The path file the app's --path writes (only for a solved run)."""
+        self.run.write_path(str(file))

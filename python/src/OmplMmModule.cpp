@@ -1,8 +1,6 @@
 // The C++ side of the Python module ompl_mm (python/ompl_mm/__init__.py adds plan() and its result):
 // scenes, planning runs as ompl_mm_plan makes them, and their paths as numpy arrays.
-#include "PythonErrors.h"
-#include "ompl_core/io/OutputFile.h"
-#include "ompl_core/run/RunRecord.h"
+#include "ModuleSupport.h"
 #include "ompl_mm/io/PathFile.h"
 #include "ompl_mm/io/PlanningRun.h"
 #include "ompl_mm/io/SceneHtml.h"
@@ -10,9 +8,6 @@
 #include "ompl_mm/scene/SceneLoader.h"
 
 #include <pybind11/numpy.h>
-#include <pybind11/stl.h>
-
-#include <sstream>
 
 namespace py = pybind11;
 using namespace ompl_mm;
@@ -37,31 +32,8 @@ namespace
     py::array_t<double> rows(const PlanningRun &run, std::size_t columns, Row row)
     {
         const ManipulationPath &path = solution(run);
-        py::array_t<double> array({path.getStateCount(), columns});
-        auto out = array.mutable_unchecked<2>();
-        for (std::size_t i = 0; i < path.getStateCount(); ++i)
-            row(path.getState(i), &out(i, 0));
-        return array;
-    }
-
-    /** The request from Python's arguments; params values are given as text to OMPL's ParamSet. */
-    PlanningRequest request(const std::string &planner, std::uint32_t seed, double timeLimit,
-                            const std::map<std::string, std::string> &params)
-    {
-        PlanningRequest request;
-        request.planner = planner;
-        request.seed = seed;
-        request.timeLimit = timeLimit;
-        for (const auto &[name, value] : params)
-            request.parameters.push_back({name, value, {"params['" + name + "']", 0}});
-        return request;
-    }
-
-    void writeFile(const std::string &file, const std::function<void(std::ostream &)> &write)
-    {
-        ompl_core::OutputFile out(file);
-        write(out.stream());
-        out.commit();
+        return ompl_python::rows(path.getStateCount(), columns,
+                                 [&](std::size_t i, double *out) { row(path.getState(i), out); });
     }
 }  // namespace
 
@@ -89,36 +61,8 @@ PYBIND11_MODULE(_ompl_mm, m)
           "Reads a scene file (and the robot files it names). Raises ompl_core.InputError at the "
           "faulty line.");
 
-    py::class_<PlanningRun>(m, "PlanningRun",
-                            "One planning run as ompl_mm_plan makes it: same seed, same path and record.")
-        .def(py::init(
-                 [](const Scene &scene, const std::string &planner, std::uint32_t seed, double timeLimit,
-                    const std::map<std::string, std::string> &params)
-                 { return std::make_unique<PlanningRun>(scene, request(planner, seed, timeLimit, params)); }),
-             py::arg("scene"), py::arg("planner"), py::arg("seed"), py::arg("time_limit"), py::arg("params"))
-        .def(
-            "solve",
-            [](PlanningRun &run)
-            {
-                ompl_python::PythonSignalStop stop;
-                {
-                    const py::gil_scoped_release release;
-                    run.solve(stop.condition());
-                }
-                stop.raiseIfInterrupted();
-            },
-            "Plans without the GIL until solved, the time limit or Ctrl-C (which raises KeyboardInterrupt "
-            "once the planner has stopped).")
-        .def_property_readonly("solved", &PlanningRun::solved)
-        .def(
-            "record_json",
-            [](const PlanningRun &run)
-            {
-                std::ostringstream out;
-                ompl_core::writeRunJson(out, run.record());
-                return out.str();
-            },
-            "The record as ompl_mm_plan --json writes it.")
+    ompl_python::bindPlanningRun<PlanningRun, PlanningRequest, Scene>(
+        m, "One planning run as ompl_mm_plan makes it: same seed, same path and record.")
         .def(
             "states",
             [](const PlanningRun &run)
@@ -182,15 +126,16 @@ PYBIND11_MODULE(_ompl_mm, m)
             "write_svg",
             [](const PlanningRun &run, const std::string &file)
             {
-                writeFile(file, [&](std::ostream &out)
-                          { writeSceneSvg(out, run.setup(), run.solved() ? &solution(run) : nullptr); });
+                ompl_python::writeFile(
+                    file, [&](std::ostream &out)
+                    { writeSceneSvg(out, run.setup(), run.solved() ? &solution(run) : nullptr); });
             },
             py::arg("file"))
         .def(
             "write_html",
             [](const PlanningRun &run, const std::string &file, const std::string &title)
             {
-                writeFile(
+                ompl_python::writeFile(
                     file, [&](std::ostream &out)
                     { writeSceneHtml(out, run.setup(), run.solved() ? &solution(run) : nullptr, title); });
             },
@@ -198,6 +143,6 @@ PYBIND11_MODULE(_ompl_mm, m)
         .def(
             "write_path",
             [](const PlanningRun &run, const std::string &file)
-            { writeFile(file, [&](std::ostream &out) { writePathFile(out, solution(run)); }); },
+            { ompl_python::writeFile(file, [&](std::ostream &out) { writePathFile(out, solution(run)); }); },
             py::arg("file"));
 }

@@ -14,6 +14,7 @@ import pytest
 
 import ompl_core
 import ompl_mm
+from run_support import without_times
 
 SCENES = os.environ["OMPL_MM_SCENES"]
 APP = os.environ["OMPL_MM_PLAN"]
@@ -21,13 +22,6 @@ APP = os.environ["OMPL_MM_PLAN"]
 
 def scene_path(name):
     return os.path.join(SCENES, name + ".xml")
-
-
-def without_times(value):
-    """value with every key that starts with "time" and the phases left out, recursively."""
-    if isinstance(value, dict):
-        return {k: without_times(v) for k, v in value.items() if not k.startswith("time") and k != "phases_s"}
-    return value
 
 
 def app_run(tmp_path, scene, seed, planner="mopl", time_limit=60.0):
