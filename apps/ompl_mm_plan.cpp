@@ -84,11 +84,7 @@ namespace
     {
         ompl_core::PhaseTimes loading;
         const ompl_mm::Scene scene = ompl_mm::loadScene(options.common.scene);
-        ompl_mm::PlanningRequest request;
-        request.planner = options.common.planner;
-        request.seed = static_cast<std::uint32_t>(options.common.seed);
-        request.timeLimit = options.common.timeLimit;
-        request.parameters = options.common.parameterSettings();
+        const auto request = options.common.request<ompl_mm::PlanningRequest>();
         ompl_mm::PlanningRun &run =
             apps::keepUntilExit(std::make_unique<ompl_mm::PlanningRun>(scene, request, loading.lap()));
         ompl_mm::ManipulationSetup &setup = run.setup();
@@ -126,15 +122,7 @@ namespace
                 ompl_mm::writePathFile(path.stream(), setup.manipulationPath());
             path.commit();
         }
-        if (json.isOpen())
-        {
-            ompl_core::writeRunJson(json.stream(), run.record());
-            json.commit();
-        }
-        run.phases().checks = run.phases().lap();
-        if (options.common.verbose)
-            run.phases().print(std::cout);
-        return solved ? 0 : 1;
+        return apps::finishRun(run, json, options.common.verbose);
     }
 }  // namespace
 

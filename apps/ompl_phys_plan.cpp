@@ -75,11 +75,7 @@ namespace
     {
         ompl_core::PhaseTimes loading;
         const ompl_phys::PhysicsScene scene = ompl_phys::loadPhysicsScene(options.common.scene);
-        ompl_phys::PhysicsPlanningRequest request;
-        request.planner = options.common.planner;
-        request.seed = static_cast<std::uint32_t>(options.common.seed);
-        request.timeLimit = options.common.timeLimit;
-        request.parameters = options.common.parameterSettings();
+        const auto request = options.common.request<ompl_phys::PhysicsPlanningRequest>();
         ompl_phys::PhysicsPlanningRun &run = apps::keepUntilExit(
             std::make_unique<ompl_phys::PhysicsPlanningRun>(scene, request, loading.lap()));
         ompl_phys::PhysicsSetup &setup = run.setup();
@@ -117,15 +113,7 @@ namespace
                 ompl_phys::writeSimulatedPathFile(path.stream(), setup, *result);
             path.commit();
         }
-        if (json.isOpen())
-        {
-            ompl_core::writeRunJson(json.stream(), run.record());
-            json.commit();
-        }
-        run.phases().checks = run.phases().lap();
-        if (options.common.verbose)
-            run.phases().print(std::cout);
-        return run.solved() ? 0 : 1;
+        return apps::finishRun(run, json, options.common.verbose);
     }
 }  // namespace
 

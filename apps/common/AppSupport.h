@@ -5,6 +5,7 @@
 #pragma once
 
 #include "ompl_core/io/InputError.h"
+#include "ompl_core/io/OutputFile.h"
 #include "ompl_core/io/PlanViewer.h"
 #include "ompl_core/run/CommandLine.h"
 #include "ompl_core/run/ExitStatus.h"
@@ -14,6 +15,8 @@
 #include <ompl/util/Console.h>
 
 #include <boost/program_options.hpp>
+
+#include <cstdint>
 
 #include <functional>
 #include <iostream>
@@ -54,12 +57,36 @@ namespace apps
             return settings;
         }
 
-        /** The run as the result record describes it, for a scene name and time limit. */
-        ompl_core::RunDescription describe(const std::string &sceneName, double timeLimitSeconds) const
+        /** The planning run's Request (ompl_mm::PlanningRequest, ompl_phys::PhysicsPlanningRequest):
+            planner, seed, time limit (negative: the scene's) and the --param settings.
+            @throws ompl_core::InputError for a --param without NAME=. */
+        template <typename Request>
+        Request request() const
         {
-            return {sceneName, planner, static_cast<std::uint32_t>(seed), timeLimitSeconds};
+            Request request;
+            request.planner = planner;
+            request.seed = static_cast<std::uint32_t>(seed);
+            request.timeLimit = timeLimit;
+            request.parameters = parameterSettings();
+            return request;
         }
     };
+
+    /** Ends a planning run's outputs: its record to json (when open), the "checks" phase, and the
+        phases printed with verbose. Returns the exit code: 0 solved, 1 not. */
+    template <typename Run>
+    int finishRun(Run &run, ompl_core::OutputFile &json, bool verbose)
+    {
+        if (json.isOpen())
+        {
+            ompl_core::writeRunJson(json.stream(), run.record());
+            json.commit();
+        }
+        run.phases().checks = run.phases().lap();
+        if (verbose)
+            run.phases().print(std::cout);
+        return run.solved() ? 0 : 1;
+    }
 
     /** @throws ompl_core::InputError unless seed is in [1, 2^32 - 1] and a given time limit is positive. */
     inline void checkSeedAndTimeLimit(long long seed, bool timeLimitGiven, double timeLimit)
