@@ -68,6 +68,10 @@ namespace ompl_mm
             between parameters. @throws ompl_core::InputError naming a setting's place: of a bad
             setting, or of the last setting when the rules between them fail. */
         void applyParameters(const std::vector<ompl_core::ParameterSetting> &settings);
+        /** Sets the parameters of planner, one of this setup's planners, as the member form does
+            for the current planner. @throws as the member form. */
+        static void applyParameters(ompl::base::Planner &planner,
+                                    const std::vector<ompl_core::ParameterSetting> &settings);
 
         /** The problem: scene, robot and tool. */
         const ManipulationModelPtr &model() const { return model_; }

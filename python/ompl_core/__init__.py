@@ -1,5 +1,5 @@
-"""What the Python modules ompl_mm and ompl_phys share: the exception for bad input, and a
-planning run started from plan()'s arguments."""
+"""What the Python modules ompl_mm, ompl_phys and ompl_bench share: the exception for bad input, a
+planning run started from plan()'s arguments, and records compared without their times."""
 import json
 
 SEED_RANGE = (1, 2**32 - 1)
@@ -16,14 +16,13 @@ class InputError(ValueError):
 
 
 def solved_run(make_run, scene, planner, seed, time_limit, params):
-    """make_run(scene, planner, seed, time_limit, params as texts) checked, made and solved. Raises
+    """make_run(scene, planner, seed, time_limit, params) checked, made and solved. Raises
     ValueError for a seed outside SEED_RANGE or a time limit that is not positive."""
     if not SEED_RANGE[0] <= seed <= SEED_RANGE[1]:
         raise ValueError(f"seed must be in [{SEED_RANGE[0]}, {SEED_RANGE[1]}], got {seed}")
     if not time_limit > 0:
         raise ValueError(f"time_limit must be positive, got {time_limit}")
-    texts = {name: str(value) for name, value in (params or {}).items()}
-    run = make_run(scene, planner, seed, float(time_limit), texts)
+    run = make_run(scene, planner, seed, float(time_limit), dict(params or {}))
     run.solve()
     return run
 
@@ -46,3 +45,13 @@ class RunResult:
     def write_path(self, file):
         """The path file the app's --path writes (only for a solved run)."""
         self.run.write_path(str(file))
+
+
+def without_times(record):
+    """A run's record (plan()'s `record`, the apps' --json) without what differs from run to run of
+    the same seed: every key starting with "time" and the phases, at any depth. Two runs of the
+    same scene, planner and seed have equal records without_times."""
+    if isinstance(record, dict):
+        return {key: without_times(value) for key, value in record.items()
+                if not key.startswith("time") and key != "phases_s"}
+    return record

@@ -7,32 +7,46 @@
 
 plan() makes the run ompl_mm_plan makes: the same scene, planner, seed and time limit give the
 same path and the same record. Bad input raises ompl_core.InputError, naming the file and line.
+
+For a loop of one's own, the OMPL-level objects, named as in C++:
+
+    ompl_mm.set_seed(1)
+    setup = ompl_mm.ManipulationSetup(scene)
+    setup.getPlanner().setParam("vertex_step", 0.3)
+    if setup.solve(10.0):
+        path = ompl_mm.Path(setup.getSolutionPath())
 """
 from ompl_core import InputError, RunResult, solved_run
-from ._ompl_mm import PlanningRun, Scene, load_scene
+from ._ompl_mm import (ManipulationPath, ManipulationSetup, Planner, PlannerStatus, PlanningRun, Scene, load_scene,
+                       set_log_level, set_seed)
 
-__all__ = ["InputError", "Path", "PlanResult", "PlanningRun", "Scene", "load_scene", "plan"]
+__all__ = ["InputError", "ManipulationPath", "ManipulationSetup", "Path", "PlanResult", "Planner", "PlannerStatus",
+           "PlanningRun", "Scene", "load_scene", "plan", "set_log_level", "set_seed"]
 
 
 class Path:
-    """A solution path as numpy arrays: `states` (one row per state), `labels` (per segment: the
-    primitive kind and the object it moved, '' for none), `tool` (n x 3, metres) and `objects`
-    (object name -> n x 4 array of x, y, z, yaw)."""
+    """A solution path (a ManipulationPath, from a PlanResult or ManipulationSetup.getSolutionPath())
+    as numpy arrays: `states` (one row per state: the robot's joints, then x y z yaw per object),
+    `labels` (per segment: the primitive kind and the object it moved, '' for none), `tool` (n x 3,
+    metres) and `objects` (object name -> n x 4 array of x, y, z, yaw); `ompl_path` is the
+    ManipulationPath itself."""
 
-    def __init__(self, run, scene):
-        self.states = run.states()
-        self.labels = run.labels()
-        self.tool = run.tool()
-        self.objects = {name: run.object_track(i) for i, name in enumerate(scene.objects)}
+    def __init__(self, path):
+        self.ompl_path = path
+        arrays = path.arrays()
+        self.states = arrays["states"]
+        self.labels = arrays["labels"]
+        self.tool = arrays["tool"]
+        self.objects = arrays["objects"]
 
 
 class PlanResult(RunResult):
     """What plan() gives: `solved`, `time_s` (the planner's time), `record` (a dict equal to what
     `ompl_mm_plan --json` writes), `path` (a Path, None when not solved), and the app's files."""
 
-    def __init__(self, run, scene, title):
+    def __init__(self, run, title):
         super().__init__(run, title)
-        self.path = Path(run, scene) if run.solved else None
+        self.path = Path(run.path()) if run.solved else None
 
     def write_svg(self, file):
         """The picture ompl_mm_plan --svg writes."""
@@ -46,4 +60,4 @@ def plan(scene, planner="mopl", seed=1, time_limit=60.0, params=None):
     if isinstance(scene, str):
         scene = load_scene(scene)
     run = solved_run(PlanningRun, scene, planner, seed, time_limit, params)
-    return PlanResult(run, scene, f"{scene.name} · {planner} · seed {seed}")
+    return PlanResult(run, f"{scene.name} · {planner} · seed {seed}")

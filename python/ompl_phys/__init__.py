@@ -8,11 +8,22 @@
 
 plan() makes the run ompl_phys_plan makes: the same scene, planner, seed and time limit give the
 same path and the same record. Bad input raises ompl_core.InputError, naming the file and line.
+
+For a loop of one's own, the OMPL-level objects, named as in C++:
+
+    ompl_phys.set_seed(1)
+    setup = ompl_phys.PhysicsSetup(scene)
+    setup.setPlannerByName("rrt")
+    setup.getPlanner().setParam("goal_bias", 0.1)
+    if setup.solve(30.0):
+        controls = setup.getSolutionPath().controls()
 """
 from ompl_core import InputError, RunResult, solved_run
-from ._ompl_phys import PlanningRun, Scene, load_scene
+from ._ompl_phys import (PathControl, PhysicsSetup, Planner, PlannerStatus, PlanningRun, Scene, load_scene,
+                         set_log_level, set_seed)
 
-__all__ = ["InputError", "Path", "PlanResult", "PlanningRun", "Scene", "load_scene", "plan"]
+__all__ = ["InputError", "Path", "PathControl", "PhysicsSetup", "PlanResult", "Planner", "PlannerStatus",
+           "PlanningRun", "Scene", "load_scene", "plan", "set_log_level", "set_seed"]
 
 
 class Path:
@@ -33,7 +44,7 @@ class PlanResult(RunResult):
 
     def __init__(self, run, title):
         super().__init__(run, title)
-        self.controls = run.controls() if run.solved else None
+        self.controls = run.path().controls() if run.solved else None
         self.path = Path(run) if run.solved else None
 
     def write_svg(self, file):

@@ -6,6 +6,7 @@
 #include "ompl_mm/io/SceneHtml.h"
 #include "ompl_mm/io/SceneSvg.h"
 #include "ompl_mm/scene/SceneLoader.h"
+#include "ompl_mm/setup/ManipulationSetup.h"
 
 #include <pybind11/numpy.h>
 
@@ -22,25 +23,60 @@ namespace
         return run.setup().manipulationPath();
     }
 
-    const ManipulationStateSpace &space(const PlanningRun &run)
+    /** The path as numpy arrays, in one pass over its states: "states" (n x the space's values),
+        "labels" (per segment: kind, object name or ''), "tool" (n x 3) and "objects" (name -> n x 4:
+        x y z yaw). */
+    py::dict pathArrays(const ManipulationPath &path)
     {
-        return *run.setup().manipulationSpace();
-    }
-
-    /** One row per state of the solution, columns from row(state, out) (columns values each). */
-    template <typename Row>
-    py::array_t<double> rows(const PlanningRun &run, std::size_t columns, Row row)
-    {
-        const ManipulationPath &path = solution(run);
-        return ompl_python::rows(path.getStateCount(), columns,
-                                 [&](std::size_t i, double *out) { row(path.getState(i), out); });
+        const auto &space = *path.getSpaceInformation()->getStateSpace()->as<ManipulationStateSpace>();
+        const std::vector<MovableObject> &objects = space.model()->scene().objects;
+        const std::size_t count = path.getStateCount();
+        py::array_t<double> tool({count, std::size_t{3}});
+        auto toolOut = tool.mutable_unchecked<2>();
+        std::vector<py::array_t<double>> tracks;
+        std::vector<py::detail::unchecked_mutable_reference<double, 2>> tracksOut;
+        for (std::size_t object = 0; object < objects.size(); ++object)
+        {
+            tracks.emplace_back(std::vector<std::size_t>{count, 4});
+            tracksOut.push_back(tracks.back().mutable_unchecked<2>());
+        }
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            const Eigen::Vector3d position = space.toolPosition(path.getState(i));
+            for (int k = 0; k < 3; ++k)
+                toolOut(i, k) = position[k];
+            for (std::size_t object = 0; object < objects.size(); ++object)
+            {
+                const ObjectPose pose = space.objectPose(path.getState(i), static_cast<unsigned int>(object));
+                auto &out = tracksOut[object];
+                out(i, 0) = pose.position.x();
+                out(i, 1) = pose.position.y();
+                out(i, 2) = pose.position.z();
+                out(i, 3) = pose.yaw;
+            }
+        }
+        py::list labels;
+        for (const SegmentLabel &label : path.labels())
+            labels.append(py::make_tuple(
+                primitiveKindName(label.kind),
+                label.object >= 0 ? objects[static_cast<std::size_t>(label.object)].name : std::string()));
+        py::dict tracksByName;
+        for (std::size_t object = 0; object < objects.size(); ++object)
+            tracksByName[py::str(objects[object].name)] = tracks[object];
+        py::dict arrays;
+        arrays["states"] =
+            ompl_python::stateRows(space, count, [&](std::size_t i) { return path.getState(i); });
+        arrays["labels"] = labels;
+        arrays["tool"] = tool;
+        arrays["objects"] = tracksByName;
+        return arrays;
     }
 }  // namespace
 
 PYBIND11_MODULE(_ompl_mm, m)
 {
     m.doc() = "Multi-modal manipulation planning (MOPL): the C++ classes under ompl_mm's Python functions.";
-    ompl_python::translateInputErrors();
+    ompl_python::translateErrors();
 
     py::class_<Scene>(m, "Scene", "A manipulation scene, as load_scene() reads it.")
         .def_readonly("name", &Scene::name)
@@ -61,67 +97,59 @@ PYBIND11_MODULE(_ompl_mm, m)
           "Reads a scene file (and the robot files it names). Raises ompl_core.InputError at the "
           "faulty line.");
 
+    ompl_python::bindOmplGlobals(m);
+    ompl_python::bindPlanner(m);
+    ompl_python::bindPlannerStatus(m);
+
+    py::class_<ManipulationPath>(m, "ManipulationPath",
+                                 "A solution: OMPL's PathGeometric with one label per segment (a copy, "
+                                 "independent of the setup it came from).")
+        .def("getStateCount", &ManipulationPath::getStateCount)
+        .def("__len__", &ManipulationPath::getStateCount)
+        .def("length", &ManipulationPath::length, "The length in the state space's metric.")
+        .def(
+            "toolPathLength",
+            [](const ManipulationPath &path)
+            { return path.getStateCount() > 0 ? path.toolPathLength() : 0.0; },
+            "The length of the tool point's path, metres.")
+        .def("check", &ManipulationPath::check,
+             "Whether every state and motion is valid (PathGeometric::check).")
+        .def("interpolate", py::overload_cast<unsigned int>(&ManipulationPath::interpolate), py::arg("count"),
+             "Inserts states along the motions until there are `count` (PathGeometric::interpolate); the "
+             "labels follow from the motions.")
+        .def("arrays", &pathArrays,
+             "The path as numpy arrays (ompl_mm.Path reads them): a dict with 'states', 'labels', 'tool' "
+             "and 'objects'.");
+
+    py::class_<ManipulationSetup> setup(
+        m, "ManipulationSetup",
+        "OMPL's SimpleSetup for a manipulation scene (C++ ompl_mm::ManipulationSetup).");
+    setup
+        .def(py::init<const Scene &>(), py::arg("scene"),
+             "Builds the problem and the scene's planner with its parameters; ompl_core.InputError at a "
+             "faulty line of the scene or its robot.")
+        .def("selectPlanner", &ManipulationSetup::selectPlanner, py::arg("name"),
+             "setPlannerByName, then gives the planner the scene's parameters that it declares.")
+        .def(
+            "getSolutionPath",
+            [](const ManipulationSetup &s) { return ManipulationPath(s.manipulationPath()); },
+            "A copy of the solution as a ManipulationPath; RuntimeError when there is none.")
+        .def("simplifySolution", py::overload_cast<double>(&ManipulationSetup::simplifySolution),
+             py::arg("duration") = 0.0, "OMPL's simplifier on the solution (0: until it converges).")
+        .def(
+            "smoothSolution",
+            [](ManipulationSetup &s, unsigned int attempts, std::uint32_t seed)
+            { s.smoothSolution(attempts, seed); },
+            py::arg("attempts") = 30, py::arg("seed") = 1,
+            "MOPL's mode-aware smoothing of the solution, in place.");
+    ompl_python::bindSetupMethods(
+        setup, static_cast<ompl_python::PlannerHandle::ApplyParameters>(&ManipulationSetup::applyParameters));
+
     ompl_python::bindPlanningRun<PlanningRun, PlanningRequest, Scene>(
         m, "One planning run as ompl_mm_plan makes it: same seed, same path and record.")
         .def(
-            "states",
-            [](const PlanningRun &run)
-            {
-                const ManipulationStateSpace &s = space(run);
-                std::vector<double> reals;
-                return rows(run, s.getDimension(),
-                            [&](const ompl::base::State *state, double *out)
-                            {
-                                s.copyToReals(reals, state);
-                                std::copy(reals.begin(), reals.end(), out);
-                            });
-            },
-            "The solution's states, one row each (the robot's joints, then x y z yaw per object).")
-        .def(
-            "labels",
-            [](const PlanningRun &run)
-            {
-                const std::vector<MovableObject> &objects = space(run).model()->scene().objects;
-                std::vector<std::pair<std::string, std::string>> labels;
-                for (const SegmentLabel &label : solution(run).labels())
-                    labels.emplace_back(primitiveKindName(label.kind),
-                                        label.object >= 0
-                                            ? objects[static_cast<std::size_t>(label.object)].name
-                                            : std::string());
-                return labels;
-            },
-            "Per segment (state i to i + 1): the primitive kind and the object it moved ('' for none).")
-        .def(
-            "tool",
-            [](const PlanningRun &run)
-            {
-                const ManipulationStateSpace &s = space(run);
-                return rows(run, 3,
-                            [&](const ompl::base::State *state, double *out)
-                            {
-                                const Eigen::Vector3d tool = s.toolPosition(state);
-                                std::copy(tool.data(), tool.data() + 3, out);
-                            });
-            },
-            "The tool point's world position at each state (n x 3, metres).")
-        .def(
-            "object_track",
-            [](const PlanningRun &run, unsigned int object)
-            {
-                const ManipulationStateSpace &s = space(run);
-                if (object >= s.objectCount())
-                    throw py::index_error("no object " + std::to_string(object));
-                return rows(run, 4,
-                            [&](const ompl::base::State *state, double *out)
-                            {
-                                const ObjectPose pose = s.objectPose(state, object);
-                                out[0] = pose.position.x();
-                                out[1] = pose.position.y();
-                                out[2] = pose.position.z();
-                                out[3] = pose.yaw;
-                            });
-            },
-            py::arg("object"), "Object number object's x y z yaw at each state (n x 4).")
+            "path", [](const PlanningRun &run) { return ManipulationPath(solution(run)); },
+            "A copy of the solution (ompl_mm.ManipulationPath); RuntimeError when there is none.")
         .def(
             "write_svg",
             [](const PlanningRun &run, const std::string &file)

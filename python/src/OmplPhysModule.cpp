@@ -8,6 +8,8 @@
 #include "ompl_phys/io/PhysicsSceneSvg.h"
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
 
+#include <ompl/control/PathControl.h>
+
 #include <ompl/control/spaces/RealVectorControlSpace.h>
 
 #include <cmath>
@@ -25,6 +27,21 @@ namespace
         return *run.simulated();
     }
 
+    /** The path's controls, one row each: force x, force y and duration. */
+    py::array_t<double> controlRows(const ompl::control::PathControl &path)
+    {
+        return ompl_python::rows(
+            path.getControlCount(), 3,
+            [&](std::size_t i, double *out)
+            {
+                const auto *force =
+                    path.getControl(i)->as<ompl::control::RealVectorControlSpace::ControlType>();
+                out[0] = force->values[0];
+                out[1] = force->values[1];
+                out[2] = path.getControlDuration(i);
+            });
+    }
+
     /** Yaw of a body orientation (about the world z axis). */
     double yawOf(const Eigen::Quaterniond &q)
     {
@@ -35,7 +52,7 @@ namespace
 PYBIND11_MODULE(_ompl_phys, m)
 {
     m.doc() = "Physics-based planning (ODE): the C++ classes under ompl_phys's Python functions.";
-    ompl_python::translateInputErrors();
+    ompl_python::translateErrors();
 
     py::class_<PhysicsScene>(m, "Scene", "A physics scene, as load_scene() reads it.")
         .def_readonly("name", &PhysicsScene::name)
@@ -54,26 +71,57 @@ PYBIND11_MODULE(_ompl_phys, m)
     m.def("load_scene", &loadPhysicsScene, py::arg("path"),
           "Reads a physics scene file. Raises ompl_core.InputError at the faulty line.");
 
+    ompl_python::bindOmplGlobals(m);
+    ompl_python::bindPlanner(m);
+    ompl_python::bindPlannerStatus(m);
+
+    py::class_<ompl::control::PathControl>(
+        m, "PathControl", "A solution: OMPL's control path (a copy, independent of its setup).")
+        .def("getStateCount", &ompl::control::PathControl::getStateCount)
+        .def("getControlCount", &ompl::control::PathControl::getControlCount)
+        .def("__len__", &ompl::control::PathControl::getStateCount)
+        .def("length", &ompl::control::PathControl::length, "The total duration of the controls, seconds.")
+        .def("check", &ompl::control::PathControl::check,
+             "Whether every state is valid (PathControl::check).")
+        .def("controls", &controlRows, "One row per control: force x, force y (N) and duration (s).")
+        .def(
+            "states",
+            [](const ompl::control::PathControl &path)
+            {
+                return ompl_python::stateRows(*path.getSpaceInformation()->getStateSpace(),
+                                              path.getStateCount(),
+                                              [&](std::size_t i) { return path.getState(i); });
+            },
+            "One row per state: per moving body (the robot first, then the movable bodies in scene order) "
+            "position x y z, orientation quaternion x y z w, linear and angular velocity.");
+
+    py::class_<PhysicsSetup> setup(
+        m, "PhysicsSetup", "OMPL's control SimpleSetup for a physics scene (C++ ompl_phys::PhysicsSetup).");
+    setup
+        .def(py::init<const PhysicsScene &>(), py::arg("scene"),
+             "Builds the ODE world, the propagator with its manipulation knowledge and KPIECE1; "
+             "ompl_core.InputError at a faulty line of the scene.")
+        .def(
+            "getSolutionPath",
+            [](const PhysicsSetup &s)
+            {
+                if (!s.haveSolutionPath())
+                    throw ompl::Exception("PhysicsSetup", "the setup has no solution");
+                return ompl::control::PathControl(s.getSolutionPath());
+            },
+            "A copy of the solution as a PathControl; RuntimeError when there is none.");
+    ompl_python::bindSetupMethods(setup, &ompl_core::applyParameters);
+
     ompl_python::bindPlanningRun<PhysicsPlanningRun, PhysicsPlanningRequest, PhysicsScene>(
         m, "One planning run as ompl_phys_plan makes it: same seed, same path and record.")
         .def(
-            "controls",
+            "path",
             [](const PhysicsPlanningRun &run)
             {
                 simulated(run);
-                const auto &path = run.setup().getSolutionPath();
-                return ompl_python::rows(
-                    path.getControlCount(), 3,
-                    [&](std::size_t i, double *out)
-                    {
-                        const auto *force =
-                            path.getControl(i)->as<ompl::control::RealVectorControlSpace::ControlType>();
-                        out[0] = force->values[0];
-                        out[1] = force->values[1];
-                        out[2] = path.getControlDuration(i);
-                    });
+                return ompl::control::PathControl(run.setup().getSolutionPath());
             },
-            "The solution's controls, one row each: force x, force y (N) and duration (s).")
+            "A copy of the solution (ompl_phys.PathControl); RuntimeError when there is none.")
         .def(
             "robot",
             [](const PhysicsPlanningRun &run)

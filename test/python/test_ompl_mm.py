@@ -14,7 +14,8 @@ import pytest
 
 import ompl_core
 import ompl_mm
-from run_support import without_times
+from ompl_core import without_times
+from signal_support import interrupted
 
 SCENES = os.environ["OMPL_MM_SCENES"]
 APP = os.environ["OMPL_MM_PLAN"]
@@ -158,21 +159,102 @@ def test_planning_releases_the_gil():
 
 def test_ctrl_c_stops_the_plan_and_raises_keyboard_interrupt():
     """SIGINT during a long plan (MEKA CLEAN-UP, seconds) ends it soon, as KeyboardInterrupt."""
-    script = ("import ompl_mm, sys\n"
-              f"scene = ompl_mm.load_scene({scene_path('meka_cleanup')!r})\n"
-              "print('planning', flush=True)\n"
-              "try:\n"
-              "    ompl_mm.plan(scene, seed=1, time_limit=600)\n"
-              "except KeyboardInterrupt:\n"
-              "    print('interrupted', flush=True)\n"
-              "    sys.exit(3)\n")
-    process = subprocess.Popen([os.environ.get("PYTHON", "/usr/bin/python3"), "-c", script],
-                               stdout=subprocess.PIPE, text=True)
-    assert process.stdout.readline() == "planning\n"
-    time.sleep(1.0)
-    process.send_signal(subprocess.signal.SIGINT)
-    try:
-        out, _ = process.communicate(timeout=60)
-    finally:
-        process.kill()
-    assert process.returncode == 3 and out.endswith("interrupted\n"), out  # OMPL logs to stdout before
+    status, out = interrupted(
+        f"import ompl_mm; ompl_mm.plan({scene_path('meka_cleanup')!r}, seed=1, time_limit=600)", 1.0)
+    assert status == 3 and out.endswith("interrupted\n"), out  # OMPL logs to stdout before
+
+
+def test_two_plans_in_two_threads_overlap():
+    """Two 1 s plans (MEKA CLEAN-UP, not solved that soon) in two threads end in less wall time than
+    the two plans' times together, which they could not while one held the GIL."""
+    scene = ompl_mm.load_scene(scene_path("meka_cleanup"))
+    results = []
+    threads = [threading.Thread(target=lambda: results.append(ompl_mm.plan(scene, seed=1, time_limit=1.0)))
+               for _ in range(2)]
+    start = time.perf_counter()
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    wall = time.perf_counter() - start
+    planned = sum(result.time_s for result in results)
+    assert len(results) == 2 and planned > 1.8
+    assert wall < 0.8 * planned, f"{wall:.2f} s for plans of {planned:.2f} s together"
+
+
+def plan_with_setup(scene, seed, vertex_step=None):
+    """A custom loop's plan: seed, setup, a parameter, solve; the status and the Path."""
+    ompl_mm.set_seed(seed)
+    setup = ompl_mm.ManipulationSetup(scene)
+    if vertex_step is not None:
+        setup.getPlanner().setParam("vertex_step", vertex_step)
+    status = setup.solve(30.0)
+    return setup, status, ompl_mm.Path(setup.getSolutionPath())
+
+
+def test_a_custom_loop_solves_changes_a_parameter_and_solves_again():
+    scene = ompl_mm.load_scene(scene_path("mobile_blocked"))
+    setup, status, path = plan_with_setup(scene, seed=4)
+    assert status and status.exact and str(status) == "Exact solution"
+    assert setup.haveExactSolutionPath() and setup.getLastPlanComputationTime() > 0
+    assert path.ompl_path.check() and len(path.ompl_path) == path.states.shape[0] == path.tool.shape[0]
+    assert len(path.labels) == len(path.ompl_path) - 1 and set(path.objects) == set(scene.objects)
+    assert numpy.isclose(numpy.linalg.norm(numpy.diff(path.tool, axis=0), axis=1).sum(),
+                         path.ompl_path.toolPathLength())
+    planner = setup.getPlanner()
+    assert planner.getName() == "MOPL" and "vertex_step" in planner.params()
+    setup.clear()
+    planner.setParam("vertex_step", 0.5)
+    assert planner.getParam("vertex_step") == "0.5"
+    assert setup.solve(30.0) and ompl_mm.Path(setup.getSolutionPath()).ompl_path.check()
+
+
+def test_a_custom_loop_is_deterministic():
+    scene = ompl_mm.load_scene(scene_path("mobile_blocked"))
+    _, _, first = plan_with_setup(scene, seed=6, vertex_step=0.3)
+    _, _, second = plan_with_setup(scene, seed=6, vertex_step=0.3)
+    assert numpy.array_equal(first.states, second.states) and first.labels == second.labels
+
+
+def test_another_registered_planner_can_be_chosen_by_name():
+    scene = ompl_mm.load_scene(scene_path("mobile_blocked"))
+    assert set(ompl_mm.ManipulationSetup.planners()) >= {"mopl", "rrtconnect", "rrt", "est"}
+    setup = ompl_mm.ManipulationSetup(scene)
+    setup.setPlannerByName("rrtconnect")
+    assert setup.getPlanner().getName() == "RRTConnect"
+    with pytest.raises(ompl_core.InputError) as error:
+        setup.setPlannerByName("no_such_planner")
+    assert "no_such_planner" in str(error.value) and "mopl" in str(error.value)
+
+
+def test_parameters_are_checked_as_on_the_command_line():
+    planner = ompl_mm.ManipulationSetup(ompl_mm.load_scene(scene_path("mobile_blocked"))).getPlanner()
+    assert planner.paramRanges()["vertex_step"] == "0.01:0.01:10"
+    with pytest.raises(ompl_core.InputError) as error:
+        planner.setParam("vertex_step", 1000)
+    assert error.value.file == "setParam('vertex_step')" and "range 0.01:0.01:10" in str(error.value)
+    with pytest.raises(ompl_core.InputError) as error:
+        planner.setParam("vertex_stride", 1)
+    assert "unknown parameter 'vertex_stride'" in str(error.value) and "vertex_step" in str(error.value)
+    with pytest.raises(ompl_core.InputError):
+        planner.setParam("restart_iterations", 1.5)
+    with pytest.raises(KeyError):
+        planner.getParam("vertex_stride")
+    assert planner.getParam("vertex_step") == "0.35", "a refused value leaves the parameter as it was"
+
+
+def test_a_setup_without_a_solution_says_so():
+    setup = ompl_mm.ManipulationSetup(ompl_mm.load_scene(scene_path("mobile_blocked")))
+    assert not setup.haveSolutionPath() and setup.goal_fault is None
+    with pytest.raises(RuntimeError):
+        setup.getSolutionPath()
+    with pytest.raises(ValueError):
+        setup.solve(0.0)
+    with pytest.raises(ValueError):
+        ompl_mm.set_log_level("loud")
+
+
+def test_ctrl_c_stops_a_setups_solve_and_raises_keyboard_interrupt():
+    status, out = interrupted("import ompl_mm; ompl_mm.ManipulationSetup(ompl_mm.load_scene("
+                              f"{scene_path('meka_cleanup')!r})).solve(600)", 1.0)
+    assert status == 3 and out.endswith("interrupted\n"), out

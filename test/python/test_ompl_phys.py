@@ -12,7 +12,7 @@ import pytest
 
 import ompl_core
 import ompl_phys
-from run_support import without_times
+from ompl_core import without_times
 
 SCENES = os.path.join(os.environ["OMPL_MM_SCENES"], "physics")
 APP = os.environ["OMPL_PHYS_PLAN"]
@@ -76,3 +76,37 @@ def test_bad_input_raises_input_error():
         ompl_phys.plan(scene, planner="no_such_planner")
     with pytest.raises(ValueError):
         ompl_phys.plan(scene, seed=0)
+
+
+def test_a_custom_loop_solves_changes_a_parameter_and_solves_again():
+    scene = ompl_phys.load_scene(os.path.join(SCENES, "scene2.xml"))
+    ompl_phys.set_seed(1)
+    setup = ompl_phys.PhysicsSetup(scene)
+    assert setup.getPlanner().getName() == "KPIECE1" and setup.goal_fault is None
+    assert setup.solve(60.0) and setup.haveExactSolutionPath()
+    path = setup.getSolutionPath()
+    controls, states = path.controls(), path.states()
+    assert controls.shape == (path.getControlCount(), 3) and states.shape[0] == path.getStateCount()
+    assert states.shape[1] == 13 * (1 + len(scene.movable_bodies)), "13 values per moving body"
+    assert numpy.isclose(controls[:, 2].sum(), path.length()) and path.check()
+    setup.setPlannerByName("rrt")
+    planner = setup.getPlanner()
+    planner.setParam("intermediate_states", True)
+    assert planner.getParam("intermediate_states") == "1"
+    with pytest.raises(ompl_core.InputError) as error:
+        planner.setParam("goal_bias", 2)
+    assert "goal_bias" in str(error.value) and "range" in str(error.value)
+    setup.clear()
+    assert setup.solve(60.0)
+
+
+def test_a_custom_loop_is_deterministic():
+    scene = ompl_phys.load_scene(os.path.join(SCENES, "scene2.xml"))
+
+    def controls():
+        ompl_phys.set_seed(3)
+        setup = ompl_phys.PhysicsSetup(scene)
+        assert setup.solve(60.0)
+        return setup.getSolutionPath().controls()
+
+    assert numpy.array_equal(controls(), controls())

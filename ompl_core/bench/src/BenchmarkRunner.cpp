@@ -80,6 +80,9 @@ namespace ompl_core
                       << elapsed << " s elapsed, about " << left << " s left" << std::endl;
             }
 
+            /** The runs finished so far. */
+            std::size_t done() const { return done_; }
+
         private:
             std::ostream *out_;
             std::size_t total_;
@@ -96,7 +99,8 @@ namespace ompl_core
     }
 
     std::vector<std::string> runBenchmark(const BenchmarkConfig &config, const Shard &shard,
-                                          const BenchmarkSceneLoader &load, std::ostream *progress)
+                                          const BenchmarkSceneLoader &load, std::ostream *progress,
+                                          const BenchmarkStop &stop)
     {
         std::vector<std::unique_ptr<BenchmarkScene>> scenes;
         for (const BenchmarkProblem &problem : config.problems)
@@ -124,6 +128,9 @@ namespace ompl_core
             {
                 if (scheduled.problem != p)
                     continue;
+                if (stop && stop())
+                    throw BenchmarkInterrupted("benchmark stopped after " + std::to_string(report.done()) +
+                                               " of " + std::to_string(runs.size()) + " runs");
                 const BenchmarkPlanner &planner = config.planners[scheduled.planner];
                 SceneRun run = scene.run(planner, problem, scheduled.seed, request,
                                          config.savedPaths != SavedPaths::None);

@@ -82,13 +82,19 @@ namespace ompl_mm
 
     void ManipulationSetup::applyParameters(const std::vector<ompl_core::ParameterSetting> &settings)
     {
-        ompl_core::applyParameters(*planner_, settings);
-        const std::shared_ptr<MOPL> planner = mopl();
-        if (!planner || settings.empty())
+        applyParameters(*planner_, settings);
+    }
+
+    void ManipulationSetup::applyParameters(ompl::base::Planner &planner,
+                                            const std::vector<ompl_core::ParameterSetting> &settings)
+    {
+        ompl_core::applyParameters(planner, settings);
+        auto *mopl = dynamic_cast<MOPL *>(&planner);
+        if (!mopl || settings.empty())
             return;
         try
         {
-            planner->checkParameters();
+            mopl->checkParameters();
         }
         catch (const ompl::Exception &e)
         {
