@@ -3,7 +3,9 @@
 # test/downstream against it with find_package(ompl_mm), find_package(ompl_phys) and
 # find_package(ompl_bench), plans the installed mobile_blocked.xml and physics/scene1.xml scenes with
 # it, found through the packages' ompl_mm_SCENES_DIR and ompl_phys_SCENES_DIR, and benchmarks a
-# planner the downstream program registers. With OTHER_OMPL_DIR (the CMake folder of an OMPL of
+# planner the downstream program registers. With PYTHON (the interpreter the Python modules are
+# built for) in the environment, the installed modules must import and plan with only the prefix's
+# Python folder on PYTHONPATH. With OTHER_OMPL_DIR (the CMake folder of an OMPL of
 # another version than the build's), configuring against that OMPL must fail, naming both versions.
 # Usage: run_downstream_test.sh BUILD_DIR SOURCE_DIR SCRATCH_DIR [OTHER_OMPL_DIR]
 set -u
@@ -76,6 +78,19 @@ CFG
 status=$?
 [ $status -eq 0 ] || fail "downstream_benchmark exited with $status (expected 0)"
 grep -q "^control_greedy_rrt$" "$scratch/own.log" || fail "$scratch/own.log has no control_greedy_rrt"
+
+python_dir=$prefix/lib/python3/dist-packages
+if [ -n "${PYTHON:-}" ]; then
+    echo "== the installed Python modules, with only $python_dir on PYTHONPATH"
+    [ -d "$python_dir/ompl_mm" ] || fail "no Python module ompl_mm in $python_dir"
+    sed 's/^greedy_rrt =$/rrt =/' "$scratch/own.cfg" > "$scratch/python.cfg" || fail "cannot write $scratch/python.cfg"
+    env -i PATH=/usr/bin:/bin PYTHONPATH="$python_dir" "$PYTHON" -c "
+import ompl_mm, ompl_phys, ompl_bench
+assert ompl_mm.plan('$scene', seed=3).solved
+assert ompl_phys.plan('$phys_scene', planner='rrt', seed=3, time_limit=5).record['planner']
+assert ompl_bench.run('$scratch/python.cfg', output='$scratch/python')
+" || fail "the installed Python modules do not import or plan"
+fi
 
 if [ -n "$other_ompl" ]; then
     echo "== configure against another OMPL ($other_ompl): must fail at configure time"
