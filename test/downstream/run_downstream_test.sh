@@ -79,6 +79,10 @@ status=$?
 [ $status -eq 0 ] || fail "downstream_benchmark exited with $status (expected 0)"
 grep -q "^control_greedy_rrt$" "$scratch/own.log" || fail "$scratch/own.log has no control_greedy_rrt"
 
+echo "== the installed planner app"
+env -i PATH=/usr/bin:/bin "$prefix/bin/ompl_mm_plan" "$scene" --seed 1 > /dev/null ||
+    fail "the installed ompl_mm_plan does not plan $scene"
+
 python_dir=$prefix/lib/python3/dist-packages
 if [ -n "${PYTHON:-}" ]; then
     echo "== the installed Python modules, with only $python_dir on PYTHONPATH"

@@ -238,6 +238,9 @@ def test_parameters_are_checked_as_on_the_command_line():
     assert "unknown parameter 'vertex_stride'" in str(error.value) and "vertex_step" in str(error.value)
     with pytest.raises(ompl_core.InputError):
         planner.setParam("restart_iterations", 1.5)
+    with pytest.raises(ompl_core.InputError) as error:  # MOPL's rule between parameters
+        planner.setParam("undefined_probability", 0.8)
+    assert "undefined_probability + start_value_probability exceeds 1" in str(error.value)
     with pytest.raises(KeyError):
         planner.getParam("vertex_stride")
     assert planner.getParam("vertex_step") == "0.35", "a refused value leaves the parameter as it was"
