@@ -11,6 +11,7 @@
 #include "ompl_mm/io/SceneSvg.h"
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
+#include "ompl_mmphys/io/PhysicsCheckRecord.h"
 
 #include <ompl/util/Console.h>
 
@@ -27,13 +28,17 @@ namespace
     struct Options
     {
         apps::CommonOptions common{"mopl"};
-        std::string path;  ///< path file, empty for none
+        std::string path;      ///< path file, empty for none
+        bool simulate{false};  ///< check the plan in physics
     };
 
     bool parseOptions(int argc, char **argv, Options &options, int &exitCode)
     {
         po::options_description extra;
-        extra.add_options()("path", po::value(&options.path), "write the path's waypoints to this text file");
+        extra.add_options()("path", po::value(&options.path), "write the path's waypoints to this text file")(
+            "simulate", po::bool_switch(&options.simulate),
+            "execute the plan in physics (ODE): report whether the objects end where planned (JSON: "
+            "physics_check)");
         if (!apps::parseCommandLine(
                 argc, argv,
                 "Usage: ompl_mm_plan SCENE.xml [options]\n"
@@ -80,6 +85,25 @@ namespace
             std::cout << "  never succeeded: " << line << "\n";
     }
 
+    /** Executes the solution in physics, adds the check to the run's record and prints it. */
+    void checkInPhysics(ompl_mm::PlanningRun &run)
+    {
+        ompl_core::PhaseTimes timer;
+        const ompl_mmphys::PhysicsCheck check =
+            ompl_mmphys::checkPlan(run.setup(), run.setup().manipulationPath());
+        const double wall = timer.lap();
+        run.addRecord("physics_check", ompl_mmphys::physicsCheckRecord(check));
+        std::cout << std::setprecision(3)
+                  << "  physics: " << (check.confirmed ? "confirmed" : "not confirmed")
+                  << "; largest end error " << check.maxPositionError << " m";
+        for (const ompl_mmphys::ObjectCheck &object : check.objects)
+            if (object.positionError == check.maxPositionError && check.maxPositionError > 0.0)
+                std::cout << " (" << object.name << ")";
+        std::cout << ", goal " << (check.goalHolds ? "holds" : "does not hold") << "; "
+                  << std::setprecision(1) << check.simulatedSeconds << " s simulated in "
+                  << std::setprecision(2) << wall << " s\n";
+    }
+
     int run(const Options &options)
     {
         ompl_core::PhaseTimes loading;
@@ -104,6 +128,8 @@ namespace
         // that its "checks" phase holds all of them but its own writing
         const bool solved = run.solved();
         printSummary(scene, setup, options);
+        if (options.simulate && solved)
+            checkInPhysics(run);
         if (svg.isOpen())
         {
             ompl_mm::writeSceneSvg(svg.stream(), setup, solved ? &setup.manipulationPath() : nullptr);

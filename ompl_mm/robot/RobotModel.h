@@ -43,6 +43,9 @@ namespace ompl_mm
         Eigen::Vector3d axis{Eigen::Vector3d::UnitX()};           ///< unit axis in the joint frame
         double lower{0.0};  ///< lower limit, metres or radians (-pi for continuous joints)
         double upper{0.0};  ///< upper limit, metres or radians (pi for continuous joints)
+        /** The URDF's velocity limit, metres or radians per second; 0 when it gives none (a
+            continuous joint without a limit element, or velocity="0"). */
+        double velocity{0.0};
         int variable{
             -1};  ///< index in the joint vector (for a mimic joint, its leader's), -1 for fixed joints
         /** The joint this one follows (URDF `<mimic>`): its index in RobotModel::joints(), -1 for a

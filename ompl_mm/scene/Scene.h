@@ -108,13 +108,25 @@ namespace ompl_mm
         }
     };
 
-    /** A movable rigid object; its frame is at the centre of its base, z up. */
+    /** A movable rigid object; its frame is at the centre of its base, z up. Its mass and friction
+        matter only where plans are simulated (planning treats objects as kinematic). */
     struct MovableObject
     {
+        /** Mass when the scene gives none, kg. */
+        static constexpr double DEFAULT_MASS = 1.0;
+        /** Largest mass a scene may give, kg. */
+        static constexpr double MAX_MASS = 1000.0;
+        /** Coulomb friction coefficient when the scene gives none (wood or plastic on wood). */
+        static constexpr double DEFAULT_FRICTION = 0.5;
+        /** Largest friction coefficient a scene may give. */
+        static constexpr double MAX_FRICTION = 5.0;
+
         std::string name;  ///< unique among obstacles and objects
         Shape shape;       ///< collision shape; its centre lies half its height above the base centre
         ObjectPose start;  ///< pose at the start of the problem
-        ompl_core::SourceLocation where;  ///< where the scene defines it, for messages
+        double mass{DEFAULT_MASS};          ///< kg, in (0, MAX_MASS]
+        double friction{DEFAULT_FRICTION};  ///< friction coefficient against anything, in [0, MAX_FRICTION]
+        ompl_core::SourceLocation where;    ///< where the scene defines it, for messages
     };
 
     /** Two robot links never checked against each other (they touch by design). */

@@ -116,16 +116,17 @@ namespace ompl_mm::test
         /** A newly allocated state with unset values, freed with the fixture. */
         ompl::base::State *newState() { return own(space_.allocState()); }
 
-        ManipulationSetup setup_;
-        ManipulationStateSpace &space_;
-
-    private:
+        /** state, freed with the fixture. */
         ompl::base::State *own(ompl::base::State *state)
         {
             owned_.push_back(state);
             return state;
         }
 
+        ManipulationSetup setup_;
+        ManipulationStateSpace &space_;
+
+    private:
         std::vector<ompl::base::State *> owned_;
     };
 }  // namespace ompl_mm::test

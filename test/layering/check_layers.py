@@ -10,7 +10,7 @@ import os
 import re
 import sys
 
-ROOTS = ["ompl_core", "ompl_mm", "ompl_phys", "ompl_bench", "apps", "benchmarks", "python"]
+ROOTS = ["ompl_core", "ompl_mm", "ompl_phys", "ompl_mmphys", "ompl_bench", "apps", "benchmarks", "python"]
 ROW = re.compile(r"^\|\s*`([^`]+)`\s*\|(.*)\|\s*$")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 

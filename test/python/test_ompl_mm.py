@@ -258,6 +258,8 @@ def test_a_setup_without_a_solution_says_so():
 
 
 def test_ctrl_c_stops_a_setups_solve_and_raises_keyboard_interrupt():
-    status, out = interrupted("import ompl_mm; ompl_mm.ManipulationSetup(ompl_mm.load_scene("
-                              f"{scene_path('meka_cleanup')!r})).solve(600)", 1.0)
+    # seeded: the check of MEKA CLEAN-UP's goal before planning depends on the seed
+    status, out = interrupted("import ompl_mm; ompl_mm.set_seed(1); "
+                              f"ompl_mm.ManipulationSetup(ompl_mm.load_scene({scene_path('meka_cleanup')!r}))"
+                              ".solve(600)", 1.0)
     assert status == 3 and out.endswith("interrupted\n"), out

@@ -246,6 +246,9 @@ namespace ompl_mm
                 throw source.jointError(joint.name, "axis must be a non-zero vector");
             joint.axis = axis.normalized();
 
+            if (urdfJoint.limits && std::isfinite(urdfJoint.limits->velocity) &&
+                urdfJoint.limits->velocity > 0.0)
+                joint.velocity = urdfJoint.limits->velocity;
             if (joint.type == Joint::Type::Continuous)
             {
                 joint.lower = -boost::math::constants::pi<double>();

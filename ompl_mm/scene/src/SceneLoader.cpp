@@ -10,6 +10,7 @@
 
 #include "ompl_core/io/InputError.h"
 #include "ompl_core/io/InputFile.h"
+#include "ompl_core/io/TextFormat.h"
 #include "ompl_core/io/XmlReading.h"
 
 namespace ompl_mm
@@ -75,9 +76,11 @@ namespace ompl_mm
                 an error at the attribute when it is no regular file. */
             std::string resolveFile(const ompl_core::XmlElement &element, const char *attribute,
                                     const std::string &kind) const;
-            /** The name of an obstacle or object, which carries no other attribute; obstacles and
-                objects share one name space, the collision world's. */
-            std::string claimBodyName(const ompl_core::XmlElement &element);
+            /** The name of an obstacle or object, whose element carries only the attributes
+                allowed (name among them); obstacles and objects share one name space, the
+                collision world's. */
+            std::string claimBodyName(const ompl_core::XmlElement &element,
+                                      std::initializer_list<const char *> allowed);
             void readObstacle(const ompl_core::XmlElement &element);
             void readSurface(const ompl_core::XmlElement &element);
             void readRegion(const ompl_core::XmlElement &element);
@@ -218,9 +221,10 @@ namespace ompl_mm
             return (error ? path : absolute).lexically_normal().string();
         }
 
-        std::string SceneParser::claimBodyName(const ompl_core::XmlElement &element)
+        std::string SceneParser::claimBodyName(const ompl_core::XmlElement &element,
+                                               std::initializer_list<const char *> allowed)
         {
-            element.checkAttributes({"name"});
+            element.checkAttributes(allowed);
             const std::string name = element.text("name");
             ompl_core::claimName(bodies_, element, name, "duplicate name '" + name + "'");
             return name;
@@ -229,7 +233,7 @@ namespace ompl_mm
         void SceneParser::readObstacle(const ompl_core::XmlElement &element)
         {
             Obstacle obstacle;
-            obstacle.name = claimBodyName(element);
+            obstacle.name = claimBodyName(element, {"name"});
             obstacle.where = element.where();
             std::vector<ompl_core::XmlElement> shapes;
             ompl_core::FirstUses singles;
@@ -291,8 +295,14 @@ namespace ompl_mm
             if (scene_.objects.size() == MAX_OBJECTS)
                 element.fail("a scene holds at most " + std::to_string(MAX_OBJECTS) + " movable objects");
             MovableObject object;
-            object.name = claimBodyName(element);
+            object.name = claimBodyName(element, {"name", "mass", "friction"});
             object.where = element.where();
+            object.mass = element.has("mass") ? element.positive("mass") : MovableObject::DEFAULT_MASS;
+            if (object.mass > MovableObject::MAX_MASS)
+                element.fail("mass", "mass must be at most " +
+                                         ompl_core::formatNumber(MovableObject::MAX_MASS) + " kg");
+            object.friction = element.inRange("friction", 0.0, MovableObject::MAX_FRICTION,
+                                              MovableObject::DEFAULT_FRICTION);
             object.shape = readOnlyShape(element, element.children({"box", "cylinder", "sphere"}));
             scene_.objects.push_back(object);
         }

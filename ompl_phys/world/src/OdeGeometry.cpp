@@ -1,5 +1,8 @@
 #include "ompl_phys/world/OdeGeometry.h"
 
+#include <cstdlib>
+#include <mutex>
+
 namespace ompl_phys
 {
     namespace
@@ -33,6 +36,34 @@ namespace ompl_phys
             return dCreateConvex(space, planes.data(), 5, points.data(), 6, polygons.data());
         }
     }  // namespace
+
+    void initialiseOde()
+    {
+        static std::once_flag once;
+        std::call_once(once,
+                       []
+                       {
+                           dInitODE2(0);
+                           std::atexit(dCloseODE);  // frees ODE's per-thread collision data
+                       });
+    }
+
+    void toOdeRotation(const Eigen::Matrix3d &rotation, dMatrix3 &out)
+    {
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c)
+                out[4 * r + c] = rotation(r, c);
+        for (int r = 0; r < 3; ++r)
+            out[4 * r + 3] = 0.0;
+    }
+
+    void placeGeom(dGeomID geom, const Eigen::Isometry3d &pose)
+    {
+        dMatrix3 rotation;
+        toOdeRotation(pose.linear(), rotation);
+        dGeomSetPosition(geom, pose.translation().x(), pose.translation().y(), pose.translation().z());
+        dGeomSetRotation(geom, rotation);
+    }
 
     dGeomID createShapeGeom(dSpaceID space, const PhysicsShape &shape, std::deque<ConvexPrismData> &prisms)
     {

@@ -7,9 +7,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdlib>
 #include <deque>
-#include <mutex>
 
 namespace ompl_phys
 {
@@ -21,27 +19,6 @@ namespace ompl_phys
         constexpr double SURFACE_LAYER = 0.001;
         /** Most contact points dCollide may return for one pair. */
         constexpr int MAX_CONTACT_POINTS = 16;
-
-        void initialiseOde()
-        {
-            static std::once_flag once;
-            std::call_once(once,
-                           []
-                           {
-                               dInitODE2(0);
-                               std::atexit(dCloseODE);  // frees ODE's per-thread collision data
-                           });
-        }
-
-        dMatrix3 &toOde(const Eigen::Matrix3d &rotation, dMatrix3 &out)
-        {
-            for (int r = 0; r < 3; ++r)
-                for (int c = 0; c < 3; ++c)
-                    out[4 * r + c] = rotation(r, c);
-            for (int r = 0; r < 3; ++r)
-                out[4 * r + 3] = 0.0;
-            return out;
-        }
     }  // namespace
 
     /** ODE handles and the arrays ODE keeps pointers into (tags, convex data). */
@@ -77,16 +54,6 @@ namespace ompl_phys
                 dWorldDestroy(world);  // destroys its bodies
         }
     };
-
-    namespace
-    {
-        void placeGeom(dGeomID geom, const Eigen::Isometry3d &pose)
-        {
-            dMatrix3 rotation;
-            dGeomSetPosition(geom, pose.translation().x(), pose.translation().y(), pose.translation().z());
-            dGeomSetRotation(geom, toOde(pose.linear(), rotation));
-        }
-    }  // namespace
 
     PhysicsWorld::PhysicsWorld(PhysicsScenePtr scene)
         : scene_(std::move(scene)), handles_(std::make_unique<Handles>())

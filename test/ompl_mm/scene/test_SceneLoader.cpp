@@ -241,6 +241,25 @@ TEST(SceneLoader, UnknownElement)
                 "unknown element <obstcle> in <scene>");
 }
 
+TEST(SceneLoader, ObjectsHaveAMassAndAFriction)
+{
+    const Scene defaults = parseLines(validLines());
+    EXPECT_EQ(defaults.objects.at(0).mass, MovableObject::DEFAULT_MASS);
+    EXPECT_EQ(defaults.objects.at(0).friction, MovableObject::DEFAULT_FRICTION);
+    const Scene given = parseLines(replaced(
+        5,
+        R"(  <object name="obj1" mass="2.5" friction="0.3"><cylinder radius="0.2" length="0.5"/></object>)"));
+    EXPECT_EQ(given.objects.at(0).mass, 2.5);
+    EXPECT_EQ(given.objects.at(0).friction, 0.3);
+    for (const char *bad : {R"(mass="0")", R"(mass="-1")", R"(mass="1001")", R"(mass="heavy")",
+                            R"(friction="-0.1")", R"(friction="6")"})
+        expectError(replaced(5, std::string(R"(  <object name="obj1" )") + bad +
+                                    R"(><cylinder radius="0.2" length="0.5"/></object>)"),
+                    5, std::string(bad).substr(0, std::string(bad).find('=')));
+    expectError(replaced(3, R"(  <obstacle name="block" mass="2"><box size="1 1 1"/></obstacle>)"), 3,
+                "unknown attribute 'mass' on <obstacle>");
+}
+
 TEST(SceneLoader, UnknownAttribute)
 {
     expectError(

@@ -1,0 +1,14 @@
+/* A physics check as the apps and the benchmark report it. */
+#pragma once
+
+#include "ompl_core/run/RunRecord.h"
+#include "ompl_mmphys/simulation/PhysicsCheck.h"
+
+namespace ompl_mmphys
+{
+    /** check as a run record: confirmed, goal_holds, max_position_error_m, max_yaw_error_rad,
+        simulated_s, the metrics action, power and smoothness, and per object (keyed by its name,
+        a '.' in it written as '_') position_error_m, yaw_error_rad, tipped, off_surface and the
+        worst errors after its pushes and places. */
+    ompl_core::RunRecord physicsCheckRecord(const PhysicsCheck &check);
+}  // namespace ompl_mmphys

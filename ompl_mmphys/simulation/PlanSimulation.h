@@ -1,0 +1,57 @@
+/* Executing a MOPL plan in ODE: the robot driven along the planned motion, the objects moving as
+   physics moves them. */
+#pragma once
+
+#include "ompl_mm/geometric/ManipulationPath.h"
+#include "ompl_mmphys/world/PlanWorld.h"
+#include "ompl_phys/metrics/TrajectoryMetrics.h"
+
+#include <vector>
+
+namespace ompl_mmphys
+{
+    /** How a plan is executed. Joints move at most at the smaller of jointSpeed and their URDF
+        velocity limit, and accelerate at most at jointAcceleration; pushes, pickups and transfers go
+        at manipulationSpeedFactor of that speed. */
+    struct SimulationSettings
+    {
+        double timeStep{0.004};               ///< ODE step, seconds
+        double jointSpeed{0.5};               ///< m/s or rad/s
+        double jointAcceleration{1.0};        ///< m/s² or rad/s²
+        double manipulationSpeedFactor{0.5};  ///< share of the speed for segments that move an object
+        double settleTime{0.5};               ///< simulated after a place and at the end, robot still, s
+        WorldSettings world;                  ///< gravity, friction of the robot and obstacles, ODE
+    };
+
+    /** Where the simulation put an object right after a push run or a place, against the plan. */
+    struct Checkpoint
+    {
+        std::size_t state{0};                                       ///< the path state the plan reaches there
+        unsigned int object{0};                                     ///< the object pushed or placed
+        ompl_mm::PrimitiveKind kind{ompl_mm::PrimitiveKind::Push};  ///< Push, or Transfer for a place
+        ompl_mm::ObjectPose simulated;                              ///< its simulated pose
+    };
+
+    /** A plan as executed in the simulation. */
+    struct SimulatedPlan
+    {
+        /** Per path state, every object's simulated pose when the robot reached it. */
+        std::vector<std::vector<ompl_mm::ObjectPose>> statePoses;
+        std::vector<Checkpoint> checkpoints;          ///< after every push run and every place
+        std::vector<ompl_mm::ObjectPose> finalPoses;  ///< after the final settling
+        std::vector<double> finalTilts;               ///< radians from upright, per object
+        /** The tool point at every step, with one move per segment and per settling (the average
+            force the robot exerted on the objects): for the trajectory metrics. */
+        ompl_phys::RobotTrajectory tool;
+        double simulatedSeconds{0.0};  ///< the plan's duration, settling included
+    };
+
+    /** Executes path in a PlanWorld of its space's model: segment by segment, the robot's joints
+        along the straight line between the states (SegmentTiming, from rest to rest), an object
+        held from the start of its pickup or transfer segments until they end (then released and
+        left to settle), everything else free. The path's labels say what each segment does.
+        Deterministic: the same path and settings give the same numbers.
+        @throws ompl::Exception for an empty path or settings that are not positive. */
+    SimulatedPlan simulatePlan(const ompl_mm::ManipulationPath &path,
+                               const SimulationSettings &settings = {});
+}  // namespace ompl_mmphys

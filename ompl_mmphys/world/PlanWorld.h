@@ -1,0 +1,84 @@
+/* The ODE world of a manipulation scene, in which a plan is executed: the robot's links driven like
+   a position-controlled robot, the objects free rigid bodies with mass and friction. */
+#pragma once
+
+#include "ompl_mm/model/ManipulationModel.h"
+
+#include <Eigen/Geometry>
+
+#include <memory>
+#include <vector>
+
+namespace ompl_mmphys
+{
+    /** What the world needs beyond the scene. The scene gives each object's mass and friction;
+        everything else rubs with the friction here. */
+    struct WorldSettings
+    {
+        double gravity{-9.81};             ///< along world z, m/s²
+        double robotFriction{0.5};         ///< friction coefficient of the robot's links
+        double obstacleFriction{0.5};      ///< of obstacles and support surfaces
+        unsigned int iterations{50};       ///< ODE QuickStep iterations per step
+        unsigned int maxContactPoints{8};  ///< per touching pair of geoms
+    };
+
+    /** An ODE world built from a manipulation scene: every robot link with collision shapes a
+        kinematic body (moved by the caller, pushing what it meets without being pushed back), every
+        movable object a dynamic body (its shape, mass and friction from the scene), obstacles
+        static geometry, and each support surface that is no obstacle's top a static slab whose top
+        is the surface. Contact friction between two bodies is the geometric mean of theirs. An
+        object can be held: it then moves rigidly with the tool (a rigid grasp) until released.
+        Not copyable (it owns ODE handles); not thread-safe (one world per thread). */
+    class PlanWorld
+    {
+    public:
+        /** Builds the world of model's scene with the robot at joint values robotStart (size dof)
+            and the objects at their start poses, at rest. */
+        PlanWorld(ompl_mm::ManipulationModelPtr model, const double *robotStart,
+                  const WorldSettings &settings = {});
+        /** Frees the ODE world, its bodies and geometry. */
+        ~PlanWorld();
+        PlanWorld(const PlanWorld &) = delete;             ///< not copyable: it owns ODE handles
+        PlanWorld &operator=(const PlanWorld &) = delete;  ///< not copyable: it owns ODE handles
+
+        /** The scene, robot and tool. */
+        const ompl_mm::ManipulationModel &model() const { return *model_; }
+
+        /** Puts the robot at joint values from and gives its links the velocities that take them to
+            joint values to in dt seconds, which the next step() carries out; held objects follow
+            the tool. @pre dt > 0. */
+        void driveRobot(const double *from, const double *to, double dt);
+
+        /** Holds object: from now on it moves rigidly with the tool, keeping its present pose
+            relative to the tool, and is moved by nothing else. */
+        void hold(unsigned int object);
+        /** Lets a held object go, at rest. */
+        void release(unsigned int object);
+        /** Whether object is held. */
+        bool isHeld(unsigned int object) const;
+
+        /** Advances the world by dt seconds. */
+        void step(double dt);
+
+        /** The object's pose: its base centre (the frame's origin moved down half its height along
+            the object's own z axis) and its yaw. */
+        ompl_mm::ObjectPose objectPose(unsigned int object) const;
+        /** The angle between the object's z axis and the world's, radians: 0 upright. */
+        double objectTilt(unsigned int object) const;
+        /** The object's linear speed, m/s. */
+        double objectSpeed(unsigned int object) const;
+        /** The sum of the forces the robot's links exerted on the objects in the last step, N (world
+            frame; objects held excluded). */
+        Eigen::Vector3d robotContactForce() const;
+
+    private:
+        struct Handles;
+        void collide();
+        void handlePair(void *geomA, void *geomB);
+        void placeHeld(const Eigen::Isometry3d &tool, const Eigen::Isometry3d &nextTool, double dt);
+
+        ompl_mm::ManipulationModelPtr model_;
+        WorldSettings settings_;
+        std::unique_ptr<Handles> handles_;
+    };
+}  // namespace ompl_mmphys

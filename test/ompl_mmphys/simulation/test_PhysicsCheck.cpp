@@ -1,0 +1,144 @@
+#include "ompl_mmphys/simulation/PhysicsCheck.h"
+
+#include "common/MobileBlocked.h"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+using namespace ompl_mm;
+using namespace ompl_mm::test;
+using ompl_mmphys::checkPlan;
+using ompl_mmphys::PhysicsCheck;
+
+namespace
+{
+    /** A fixture with MOBILE BLOCKED planned by MOPL (seed 1). */
+    class PhysicsCheckTest : public MobileBlockedTest
+    {
+    protected:
+        const ManipulationPath &plan()
+        {
+            setup_.mopl()->setSeed(1);
+            EXPECT_TRUE(setup_.solve(30.0));
+            return setup_.manipulationPath();
+        }
+
+        /** The index of the object called name. */
+        unsigned int objectIndex(const std::string &name) const
+        {
+            const std::vector<MovableObject> &objects = space_.model()->scene().objects;
+            for (unsigned int k = 0; k < objects.size(); ++k)
+                if (objects[k].name == name)
+                    return k;
+            ADD_FAILURE() << "no object " << name;
+            return 0;
+        }
+    };
+}  // namespace
+
+TEST_F(PhysicsCheckTest, TheSimulationFollowsThePlanStateByState)
+{
+    const ManipulationPath &path = plan();
+    const PhysicsCheck check = checkPlan(setup_, path);
+    const ompl_mmphys::SimulatedPlan &simulation = check.simulation;
+    ASSERT_EQ(simulation.statePoses.size(), path.getStateCount());
+    std::size_t steps = 0;
+    for (const ompl_phys::RobotMove &move : simulation.tool.moves)
+        steps += move.steps;
+    EXPECT_EQ(simulation.tool.positions.size(), steps + 1);
+    EXPECT_NEAR(check.simulatedSeconds, static_cast<double>(steps) * 0.004, 1e-9);
+    // the objects start where the scene puts them, and the robot's tool follows the plan
+    for (unsigned int k = 0; k < space_.objectCount(); ++k)
+        EXPECT_LT(
+            (simulation.statePoses[0][k].position - space_.objectPose(path.getState(0), k).position).norm(),
+            1e-3);
+    EXPECT_LT(
+        (simulation.tool.positions.back() - space_.toolPosition(path.getState(path.getStateCount() - 1)))
+            .norm(),
+        1e-9);
+    // every push run leaves a checkpoint, and the pushed obj3 really moves in the simulation
+    EXPECT_FALSE(simulation.checkpoints.empty());
+    const unsigned int obj3 = objectIndex("obj3");
+    EXPECT_GT(
+        (simulation.finalPoses[obj3].position - space_.objectPose(path.getState(0), obj3).position).norm(),
+        0.3);
+    EXPECT_GT(check.metrics.action, 0.0) << "the robot pushes, so it exerts force";
+}
+
+TEST_F(PhysicsCheckTest, TheSameSeedGivesTheSameNumbers)
+{
+    const ManipulationPath &path = plan();
+    const PhysicsCheck first = checkPlan(setup_, path), second = checkPlan(setup_, path);
+    for (unsigned int k = 0; k < space_.objectCount(); ++k)
+    {
+        EXPECT_EQ(first.simulation.finalPoses[k].position, second.simulation.finalPoses[k].position);
+        EXPECT_EQ(first.objects[k].positionError, second.objects[k].positionError);
+    }
+    EXPECT_EQ(first.metrics.smoothness, second.metrics.smoothness);
+}
+
+TEST_F(PhysicsCheckTest, ReportedErrorsAreTheDistancesFromThePlannedEndPoses)
+{
+    const ManipulationPath &path = plan();
+    const PhysicsCheck check = checkPlan(setup_, path);
+    double largest = 0.0;
+    for (unsigned int k = 0; k < space_.objectCount(); ++k)
+    {
+        const ObjectPose planned = space_.objectPose(path.getState(path.getStateCount() - 1), k);
+        const double error = (check.simulation.finalPoses[k].position - planned.position).norm();
+        EXPECT_NEAR(check.objects[k].positionError, error, 1e-12) << check.objects[k].name;
+        EXPECT_EQ(check.objects[k].yawError, 0.0) << "cylinders' yaw does not matter";
+        largest = std::max(largest, error);
+    }
+    EXPECT_EQ(check.maxPositionError, largest);
+    EXPECT_EQ(check.confirmed, largest <= 0.02 && check.goalHolds);
+}
+
+TEST_F(PhysicsCheckTest, AnObjectTeleportedInThePlanIsCaught)
+{
+    // obj1 is never touched; the planted plan says it ends a metre away
+    const ManipulationPath &solved = plan();
+    const unsigned int obj1 = objectIndex("obj1");
+    ompl::base::State *end = own(space_.cloneState(solved.getState(solved.getStateCount() - 1)));
+    ObjectPose moved = space_.objectPose(end, obj1);
+    moved.position.x() += 1.0;
+    space_.setObjectPose(end, obj1, moved);
+    ManipulationPath planted(setup_.getSpaceInformation());  // the plan's labels, kept as given
+    planted.appendFirst(solved.getState(0));
+    for (std::size_t i = 1; i < solved.getStateCount(); ++i)
+        planted.appendLabelled(i + 1 < solved.getStateCount() ? solved.getState(i) : end,
+                               solved.label(i - 1));
+    const PhysicsCheck check = checkPlan(setup_, planted);
+    EXPECT_FALSE(check.confirmed);
+    EXPECT_NEAR(check.objects[obj1].positionError, 1.0, 0.01);
+    EXPECT_GE(check.maxPositionError, check.objects[obj1].positionError);
+}
+
+TEST_F(PhysicsCheckTest, ATransitLeavesTheObjectsAtRestButDoesNotReachTheGoal)
+{
+    ompl::base::State *start = startCopy();
+    ompl::base::State *away = startCopy();
+    setRobot(space_, away, 1.9, 1.0);  // down the free corridor on the east side
+    ManipulationPath path(setup_.getSpaceInformation());
+    path.appendFirst(start);
+    path.appendLabelled(away, TRANSIT);
+    const PhysicsCheck check = checkPlan(setup_, path);
+    for (const ompl_mmphys::ObjectCheck &object : check.objects)
+    {
+        EXPECT_LT(object.positionError, 1e-3) << object.name;
+        EXPECT_FALSE(object.tipped || object.offSurface) << object.name;
+    }
+    EXPECT_FALSE(check.goalHolds) << "obj3 stays far from its goal";
+    EXPECT_FALSE(check.confirmed);
+    EXPECT_EQ(check.metrics.action, 0.0) << "nothing touched";
+}
+
+TEST_F(PhysicsCheckTest, BadSettingsAreRefused)
+{
+    ManipulationPath empty(setup_.getSpaceInformation());
+    EXPECT_THROW(ompl_mmphys::simulatePlan(empty), ompl::Exception);
+    ompl_mmphys::SimulationSettings settings;
+    settings.timeStep = 0.0;
+    EXPECT_THROW(ompl_mmphys::simulatePlan(plan(), settings), ompl::Exception);
+}
