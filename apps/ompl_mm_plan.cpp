@@ -19,6 +19,7 @@
 
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace po = boost::program_options;
@@ -38,7 +39,7 @@ namespace
         extra.add_options()("path", po::value(&options.path), "write the path's waypoints to this text file")(
             "simulate", po::bool_switch(&options.simulate),
             "execute the plan in physics (ODE): report whether the objects end where planned (JSON: "
-            "physics_check)");
+            "physics_check; --path: the simulated poses as columns sim.OBJECT.x ...)");
         if (!apps::parseCommandLine(
                 argc, argv,
                 "Usage: ompl_mm_plan SCENE.xml [options]\n"
@@ -85,13 +86,11 @@ namespace
             std::cout << "  never succeeded: " << line << "\n";
     }
 
-    /** Executes the solution in physics, adds the check to the run's record and prints it. */
-    void checkInPhysics(ompl_mm::PlanningRun &run)
+    /** Executes the solution in physics, adds the check to the run's record, prints and returns it. */
+    ompl_mmphys::PhysicsCheck checkInPhysics(ompl_mm::PlanningRun &run)
     {
-        ompl_core::PhaseTimes timer;
         const ompl_mmphys::PhysicsCheck check =
             ompl_mmphys::checkPlan(run.setup(), run.setup().manipulationPath());
-        const double wall = timer.lap();
         run.addRecord("physics_check", ompl_mmphys::physicsCheckRecord(check));
         std::cout << std::setprecision(3)
                   << "  physics: " << (check.confirmed ? "confirmed" : "not confirmed")
@@ -101,7 +100,8 @@ namespace
                 std::cout << " (" << object.name << ")";
         std::cout << ", goal " << (check.goalHolds ? "holds" : "does not hold") << "; "
                   << std::setprecision(1) << check.simulatedSeconds << " s simulated in "
-                  << std::setprecision(2) << wall << " s\n";
+                  << std::setprecision(2) << check.wallSeconds << " s\n";
+        return check;
     }
 
     int run(const Options &options)
@@ -128,8 +128,9 @@ namespace
         // that its "checks" phase holds all of them but its own writing
         const bool solved = run.solved();
         printSummary(scene, setup, options);
+        std::optional<ompl_mmphys::PhysicsCheck> check;
         if (options.simulate && solved)
-            checkInPhysics(run);
+            check = checkInPhysics(run);
         if (svg.isOpen())
         {
             ompl_mm::writeSceneSvg(svg.stream(), setup, solved ? &setup.manipulationPath() : nullptr);
@@ -145,7 +146,9 @@ namespace
         if (path.isOpen())
         {
             if (solved)  // without a solution the file stays empty
-                ompl_mm::writePathFile(path.stream(), setup.manipulationPath());
+                ompl_mm::writePathFile(
+                    path.stream(), setup.manipulationPath(),
+                    check ? ompl_mmphys::simulatedPoseColumns(*check) : ompl_mm::ExtraColumns());
             path.commit();
         }
         return apps::finishRun(run, json, options.common.verbose);

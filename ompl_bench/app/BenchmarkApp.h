@@ -4,8 +4,8 @@
 
 namespace ompl_bench
 {
-    /** Runs `NAME CONFIG.cfg [--shard K/N] [--output DIR] [--quiet]`: reads the cfg (OMPL.app's ompl_benchmark
-        format, see docs/benchmarks.md), runs the benchmark with planners from the registries of
+    /** Runs `NAME CONFIG.cfg [--shard K/N] [--output DIR] [--quiet]`: reads the cfg (OMPL.app's
+       ompl_benchmark format, see docs/benchmarks.md), runs the benchmark with planners from the registries of
         ompl_mm::ManipulationSetup and ompl_phys::PhysicsSetup (a planner a program adds there
         before this call can be named in the cfg), and writes OMPL benchmark logs.
         @returns the exit status: 0 when every run was made and the logs written, 1 when a log or

@@ -54,13 +54,14 @@ namespace ompl_core
         std::string output;                       ///< folder of the logs; the cfg's folder by default
         SavedPaths savedPaths{SavedPaths::None};  ///< solution paths written beside the logs
         bool simplify{true};                      ///< Benchmark's simplification of geometric paths
+        bool simulate{false};                     ///< ompl_mm scenes' solutions executed in physics too
         std::uint32_t seed{1};                    ///< from which every run's seed derives
         std::vector<BenchmarkPlanner> planners;   ///< in file order
     };
 
     /** Reads a config: INI sections [problem] (repeatable; name, scene, time_limit, and any other
         key as a planner parameter), [benchmark] (time_limit, mem_limit, run_count, output,
-        save_paths, simplify, seed) and [planner] (NAME= adds an instance of a registered planner;
+        save_paths, simplify, simulate, seed) and [planner] (NAME= adds an instance of a registered planner;
         NAME.param=value sets a parameter of the latest NAME, NAME.name=label names it). '#' starts
         a comment. Whether planners and parameters exist is left to the scene's registry.
         @throws InputError naming file:line for an unknown section or key, a key outside any

@@ -43,6 +43,7 @@ namespace ompl_mmphys
         std::vector<ObjectCheck> objects;      ///< in scene order
         ompl_phys::TrajectoryMetrics metrics;  ///< of the tool point, with the robot's contact forces
         double simulatedSeconds{0.0};          ///< the plan's simulated duration
+        double wallSeconds{0.0};               ///< how long the check took, seconds
         SimulatedPlan simulation;              ///< what the simulation gave
     };
 

@@ -35,7 +35,8 @@ namespace ompl_mmphys
     /** A plan as executed in the simulation. */
     struct SimulatedPlan
     {
-        /** Per path state, every object's simulated pose when the robot reached it. */
+        /** Per path state, every object's simulated pose when the robot reached it (at the last,
+            after the final settling: finalPoses). */
         std::vector<std::vector<ompl_mm::ObjectPose>> statePoses;
         std::vector<Checkpoint> checkpoints;          ///< after every push run and every place
         std::vector<ompl_mm::ObjectPose> finalPoses;  ///< after the final settling

@@ -26,9 +26,10 @@ namespace ompl_mmphys
         kinematic body (moved by the caller, pushing what it meets without being pushed back), every
         movable object a dynamic body (its shape, mass and friction from the scene), obstacles
         static geometry, and each support surface that is no obstacle's top a static slab whose top
-        is the surface. Contact friction between two bodies is the geometric mean of theirs. An
-        object can be held: it then moves rigidly with the tool (a rigid grasp) until released.
-        Not copyable (it owns ODE handles); not thread-safe (one world per thread). */
+        is the surface. An object that falls a metre below the lowest surface or obstacle stops
+        there (it fell out of the world). Contact friction between two bodies is the geometric mean of theirs.
+       An object can be held: it then moves rigidly with the tool (a rigid grasp) until released. Not copyable
+       (it owns ODE handles); not thread-safe (one world per thread). */
     class PlanWorld
     {
     public:

@@ -48,7 +48,7 @@ namespace
             written = ompl_core::runBenchmark(
                 config, shard,
                 [&](const ompl_core::BenchmarkProblem &problem)
-                { return ompl_bench::loadBenchmarkScene(problem, config.planners); },
+                { return ompl_bench::loadBenchmarkScene(problem, config.planners, config.simulate); },
                 progress ? &std::cerr : nullptr, [&] { return stop.requested(); });
         }
         catch (const ompl_core::BenchmarkInterrupted &)

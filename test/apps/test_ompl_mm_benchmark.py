@@ -92,6 +92,15 @@ def columns_of(db, table):
     return names
 
 
+def quiet_benchmark(benchmark, scratch, name, cfg_text):
+    """Runs benchmark --quiet on scratch/NAME.cfg (written from cfg_text) and loads its log into
+    scratch/NAME.db; returns the exit status, standard error and the database's path."""
+    status, _, err = run([benchmark, write(os.path.join(scratch, f"{name}.cfg"), cfg_text), "--quiet"])
+    db = os.path.join(scratch, f"{name}.db")
+    database([os.path.join(scratch, f"{name}.log")], db)
+    return status, err, db
+
+
 def check_bad_configs(checks, args, scratch):
     """Each kind of bad config: exit 2 and a message naming the cfg file and line."""
     mm = os.path.join(args.scenes, "mobile_blocked.xml")
@@ -214,6 +223,32 @@ def check_physics_log(checks, args, scratch):
                      f"exit {status}", err, f"log: {action}, {smoothness}", f"app: {again}")
 
 
+def check_simulated_log(checks, args, scratch):
+    """simulate = 1: each solved run's physics check is a run property, the same the plan app reports for
+    the run's seed."""
+    scene = os.path.join(args.scenes, "mobile_blocked.xml")
+    status, err, db = quiet_benchmark(args.benchmark, scratch, "simulated",
+                                      f"[problem]\nname = mobile_blocked\nscene = {scene}\n[benchmark]\n"
+                                      "time_limit = 30\nrun_count = 2\nsimplify = 0\nsimulate = 1\n"
+                                      "[planner]\nmopl =\n")
+    columns = columns_of(db, "runs") if os.path.isfile(db) else []
+    wanted = ["physics_check_confirmed", "physics_check_max_position_error_m", "physics_check_action",
+              "physics_check_power", "physics_check_smoothness"]
+    checks.check("simulate = 1: the physics check's values are columns of runs",
+                 status == 0 and all(c in columns for c in wanted), f"exit {status}", err, columns)
+    if not all(c in columns for c in wanted):
+        return
+    for _, seed, confirmed, error in rows(db, ["seed", "physics_check_confirmed",
+                                               "physics_check_max_position_error_m"]):
+        json_path = os.path.join(scratch, f"simulated{seed}.json")
+        status, _, err = run([args.mm_plan, scene, "--seed", str(seed), "--simulate", "--json", json_path])
+        again = json.load(open(json_path)).get("physics_check", {}) if os.path.isfile(json_path) else {}
+        checks.check(f"ompl_mm_plan --seed {seed} --simulate reports the run's physics check again",
+                     status == 0 and again.get("confirmed") == bool(confirmed)
+                     and abs(again.get("max_position_error_m", -1) - error) <= 1e-9 * max(error, 1e-9),
+                     f"exit {status}", err, f"log: {confirmed}, {error}", f"app: {again}")
+
+
 def check_shards(checks, args, scratch):
     """Three shards through GNU parallel, merged, hold the same runs as one unsharded run."""
     scene = os.path.join(args.scenes, "mobile_blocked.xml")
@@ -265,12 +300,9 @@ def check_shards(checks, args, scratch):
 def check_user_planner(checks, args, scratch):
     """A planner defined outside the libraries, registered by the user's own main, runs from a cfg."""
     scene = os.path.join(args.scenes, "physics", "scene1.xml")
-    cfg = write(os.path.join(scratch, "user.cfg"),
-                f"[problem]\nname = scene1\nscene = {scene}\n[benchmark]\ntime_limit = 0.5\nrun_count = 2\n"
-                "[planner]\nrandom_tree =\nrandom_tree.max_steps = 5\nrrt =\n")
-    status, _, err = run([args.user_benchmark, cfg, "--quiet"])
-    db = os.path.join(scratch, "user.db")
-    database([os.path.join(scratch, "user.log")], db)
+    status, err, db = quiet_benchmark(args.user_benchmark, scratch, "user",
+                                      f"[problem]\nname = scene1\nscene = {scene}\n[benchmark]\ntime_limit = 0.5\n"
+                                      "run_count = 2\n[planner]\nrandom_tree =\nrandom_tree.max_steps = 5\nrrt =\n")
     planners = sorted({r[0] for r in rows(db, ["seed"])}) if status == 0 else []
     checks.check("a user's planner runs from a cfg beside a shipped one",
                  status == 0 and planners == ["control_random_tree", "control_rrt"] and len(rows(db, ["seed"])) == 4,
@@ -280,6 +312,7 @@ def check_user_planner(checks, args, scratch):
     con.close()
     checks.check("its declared parameter is set from the cfg and logged", any("max_steps = 5" in s for s in settings),
                  settings)
+    cfg = os.path.join(scratch, "user.cfg")
     status, _, err = run([args.benchmark, cfg, "--quiet"])
     checks.check("without the user's program the planner is unknown, at its line",
                  status == 2 and f"{cfg}:8: unknown planner 'random_tree'" in err, f"exit {status}", err)
@@ -297,6 +330,7 @@ def main():
     check_bad_configs(checks, args, args.scratch)
     check_mopl_log(checks, args, args.scratch)
     check_physics_log(checks, args, args.scratch)
+    check_simulated_log(checks, args, args.scratch)
     check_shards(checks, args, args.scratch)
     check_user_planner(checks, args, args.scratch)
     print(f"{checks.passed} passed, {checks.failed} failed")

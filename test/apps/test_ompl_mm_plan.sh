@@ -138,8 +138,37 @@ else
         "$(diff "$path1" "$path2" 2>&1 | head -n 6)"
 fi
 
+# --- 2b. the plan executed in physics (--simulate) --------------------------------------------------
+sim_json=$scratch/simulated.json
+sim_path=$scratch/simulated.txt
+run simulate "$scene" --seed 1 --simulate --json "$sim_json" --path "$sim_path"
+if [ $status -eq 0 ] && report=$(python3 - "$sim_json" "$sim_path" "$path1" 2>&1 <<'PY'
+import json, math, sys
+check = json.load(open(sys.argv[1]))["physics_check"]
+for key in ("confirmed", "goal_holds", "max_position_error_m", "max_yaw_error_rad", "simulated_s", "action",
+            "power", "smoothness", "objects"):
+    assert key in check, f"physics_check has no {key}"
+rows = [line.split() for line in open(sys.argv[2])]
+names = rows[0][1:]
+last = dict(zip(names, rows[-1]))
+planned = [line.split() for line in open(sys.argv[3])]
+assert [r[:len(planned[1])] for r in rows[1:]] == planned[1:], "the planned columns stay as they are"
+for name, errors in check["objects"].items():
+    error = math.dist([float(last[f"sim.{name}.{c}"]) for c in "xyz"], [float(last[f"{name}.{c}"]) for c in "xyz"])
+    assert abs(error - errors["position_error_m"]) < 1e-6, f"{name}: {error} from the path file, reported {errors}"
+assert check["max_position_error_m"] == max(o["position_error_m"] for o in check["objects"].values())
+assert check["confirmed"] == (check["max_position_error_m"] <= 0.02 and check["goal_holds"] and not any(
+    o["tipped"] or o["off_surface"] for o in check["objects"].values()))
+PY
+); then
+    ok "--simulate: physics_check in the JSON, its errors recomputed from the path file's simulated columns"
+else
+    not_ok "--simulate: physics_check in the JSON, its errors recomputed from the path file's simulated columns" \
+        "exit $status" "$report" "$(outputs)"
+fi
+
 # --- 3. help and usage -----------------------------------------------------------------------------
-check_help_and_usage --planner --seed --time-limit --param --json --svg --path mopl
+check_help_and_usage --planner --seed --time-limit --param --json --svg --path --simulate mopl
 
 # --- 4. not solved -----------------------------------------------------------------------------------
 walled=$(make_scene walled_goal)

@@ -68,7 +68,7 @@ namespace ompl_bench
             const std::vector<std::string> written = ompl_core::runBenchmark(
                 config, shard,
                 [&](const ompl_core::BenchmarkProblem &problem)
-                { return loadBenchmarkScene(problem, config.planners); },
+                { return loadBenchmarkScene(problem, config.planners, config.simulate); },
                 options.quiet ? nullptr : &std::cerr);
             for (const std::string &file : written)
                 std::cout << file << '\n';

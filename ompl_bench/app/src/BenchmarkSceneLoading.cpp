@@ -4,6 +4,7 @@
 #include "ompl_core/io/InputFile.h"
 #include "ompl_mm/bench/ManipulationBenchmarkScene.h"
 #include "ompl_mm/scene/SceneLoader.h"
+#include "ompl_mmphys/bench/SimulatedBenchmarkScene.h"
 #include "ompl_phys/bench/PhysicsBenchmarkScene.h"
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
 
@@ -62,7 +63,8 @@ namespace ompl_bench
     }  // namespace
 
     std::unique_ptr<ompl_core::BenchmarkScene> loadBenchmarkScene(
-        const ompl_core::BenchmarkProblem &problem, const std::vector<ompl_core::BenchmarkPlanner> &planners)
+        const ompl_core::BenchmarkProblem &problem, const std::vector<ompl_core::BenchmarkPlanner> &planners,
+        bool simulate)
     {
         const SceneKind kind = sceneKind(problem);
         const SceneKind other =
@@ -79,6 +81,8 @@ namespace ompl_bench
             throw ompl_core::InputError(planner.where, "unknown planner '" + planner.type + "' (" + scene +
                                                            "; its planners: " + known(kind) + ")");
         }
+        if (kind == SceneKind::Manipulation && simulate)
+            return std::make_unique<ompl_mmphys::SimulatedBenchmarkScene>(ompl_mm::loadScene(problem.scene));
         if (kind == SceneKind::Manipulation)
             return std::make_unique<ompl_mm::ManipulationBenchmarkScene>(ompl_mm::loadScene(problem.scene));
         return std::make_unique<ompl_phys::PhysicsBenchmarkScene>(

@@ -169,13 +169,15 @@ namespace ompl_core
                     config_.savedPaths = savedPaths(entry);
                 else if (entry.key == "simplify")
                     config_.simplify = flag(entry);
+                else if (entry.key == "simulate")
+                    config_.simulate = flag(entry);
                 else if (entry.key == "seed")
                     config_.seed = static_cast<std::uint32_t>(wholeNumber(entry, 1, 4294967295.0));
                 else
                     throw InputError(entry.where,
                                      "unknown key '" + entry.key +
                                          "' in [benchmark] (known: time_limit, mem_limit, run_count, "
-                                         "output, save_paths, simplify, seed)");
+                                         "output, save_paths, simplify, simulate, seed)");
             }
 
             void readPlannerEntry(const Entry &entry)

@@ -2,13 +2,22 @@
 
 #include <ompl/base/SpaceInformation.h>
 
+#include <algorithm>
 #include <iomanip>
+#include <string>
 #include <vector>
 
 namespace ompl_mm
 {
-    void writePathFile(std::ostream &out, const ManipulationPath &path)
+    void writePathFile(std::ostream &out, const ManipulationPath &path, const ExtraColumns &extra)
     {
+        if (!extra.values.empty() &&
+            (extra.values.size() != path.getStateCount() ||
+             std::any_of(extra.values.begin(), extra.values.end(),
+                         [&](const std::vector<double> &row) { return row.size() != extra.names.size(); })))
+            throw ompl::Exception("writePathFile", "extra columns need one row of " +
+                                                       std::to_string(extra.names.size()) +
+                                                       " values per waypoint");
         const auto *space = path.getSpaceInformation()->getStateSpace()->as<ManipulationStateSpace>();
         const ManipulationModel &model = *space->model();
         out << "# segment object tool.x tool.y tool.z";
@@ -25,6 +34,8 @@ namespace ompl_mm
         for (const MovableObject &object : model.scene().objects)
             out << ' ' << object.name << ".x " << object.name << ".y " << object.name << ".z " << object.name
                 << ".yaw";
+        for (const std::string &name : extra.names)
+            out << ' ' << name;
         out << '\n' << std::setprecision(10);
         const std::vector<SegmentLabel> &labels = path.labels();  // checked once, not per waypoint
         for (std::size_t i = 0; i < path.getStateCount(); ++i)
@@ -50,6 +61,9 @@ namespace ompl_mm
                 out << ' ' << pose.position.x() << ' ' << pose.position.y() << ' ' << pose.position.z() << ' '
                     << pose.yaw;
             }
+            if (!extra.values.empty())
+                for (double value : extra.values[i])
+                    out << ' ' << value;
             out << '\n';
         }
     }

@@ -26,10 +26,26 @@ namespace ompl_mmphys
             .addNumber("max_position_error_m", check.maxPositionError)
             .addNumber("max_yaw_error_rad", check.maxYawError)
             .addNumber("simulated_s", check.simulatedSeconds)
+            .addNumber("time_s", check.wallSeconds)
             .addNumber("action", check.metrics.action)
             .addNumber("power", check.metrics.power)
             .addNumber("smoothness", check.metrics.smoothness)
             .addRecord("objects", objects);
         return record;
+    }
+
+    ompl_mm::ExtraColumns simulatedPoseColumns(const PhysicsCheck &check)
+    {
+        ompl_mm::ExtraColumns columns;
+        for (const ObjectCheck &object : check.objects)
+            for (const char *coordinate : {".x", ".y", ".z", ".yaw"})
+                columns.names.push_back("sim." + object.name + coordinate);
+        for (const std::vector<ompl_mm::ObjectPose> &poses : check.simulation.statePoses)
+        {
+            std::vector<double> &row = columns.values.emplace_back();
+            for (const ompl_mm::ObjectPose &pose : poses)
+                row.insert(row.end(), {pose.position.x(), pose.position.y(), pose.position.z(), pose.yaw});
+        }
+        return columns;
     }
 }  // namespace ompl_mmphys

@@ -1,6 +1,7 @@
 #include "ompl_mmphys/simulation/PhysicsCheck.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace ompl_mmphys
@@ -32,6 +33,7 @@ namespace ompl_mmphys
     PhysicsCheck checkPlan(const ompl_mm::ManipulationSetup &setup, const ompl_mm::ManipulationPath &path,
                            const SimulationSettings &settings, const CheckTolerances &tolerances)
     {
+        const auto start = std::chrono::steady_clock::now();
         PhysicsCheck check;
         check.simulation = simulatePlan(path, settings);
         const ompl_mm::ManipulationStateSpace &space = *setup.manipulationSpace();
@@ -79,6 +81,7 @@ namespace ompl_mmphys
         check.confirmed = withinTolerances && check.goalHolds;
         check.metrics = ompl_phys::computeTrajectoryMetrics(check.simulation.tool);
         check.simulatedSeconds = check.simulation.simulatedSeconds;
+        check.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return check;
     }
 }  // namespace ompl_mmphys

@@ -63,6 +63,7 @@ namespace ompl_mmphys
                 }
                 settle(space_.robotValues(path_.getState(path_.getStateCount() - 1)));
                 plan_.finalPoses = objectPoses();
+                plan_.statePoses.back() = plan_.finalPoses;
                 for (unsigned int k = 0; k < space_.objectCount(); ++k)
                     plan_.finalTilts.push_back(world_.objectTilt(k));
                 plan_.simulatedSeconds =

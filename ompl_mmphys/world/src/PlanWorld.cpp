@@ -29,6 +29,9 @@ namespace ompl_mmphys
         constexpr unsigned long ODE_SEED = 1;
         /** Contacts are created this far before geometry touches; damps resting jitter, metres. */
         constexpr double SURFACE_LAYER = 0.001;
+        /** How far below the lowest support surface or obstacle an object that fell out of the world
+            is stopped, metres: it would fall on for ever. */
+        constexpr double FALL_DEPTH = 1.0;
 
         dGeomID createGeom(dSpaceID space, const ompl_mm::Shape &shape, std::deque<OdeMesh> &meshes)
         {
@@ -135,6 +138,7 @@ namespace ompl_mmphys
         std::deque<OdeMesh> meshes;
         std::deque<RobotContact> robotContacts;  ///< of the last step
         std::vector<Eigen::Isometry3d> frames, nextFrames;
+        double fallLimit{0.0};  ///< world z below which a falling object is stopped
         Eigen::Isometry3d tool{Eigen::Isometry3d::Identity()};
 
         ~Handles()
@@ -167,10 +171,16 @@ namespace ompl_mmphys
         dWorldSetContactSurfaceLayer(h.world, SURFACE_LAYER);
         dWorldSetAutoDisableFlag(h.world, 0);
 
+        double lowest = 0.0;
+        for (const ompl_mm::SupportSurface &surface : scene.surfaces)
+            lowest = std::min(lowest, surface.height);
         for (const ompl_mm::Obstacle &obstacle : scene.obstacles)
         {
             dGeomID geom = createGeom(h.space, obstacle.shape, h.meshes);
             ompl_phys::placeGeom(geom, obstacle.pose);
+            dReal box[6];
+            dGeomGetAABB(geom, box);
+            lowest = std::min(lowest, static_cast<double>(box[4]));
             dGeomSetData(
                 geom, &h.tags.emplace_back(Handles::GeomTag{TagKind::Static, 0, settings_.obstacleFriction}));
         }
@@ -186,6 +196,7 @@ namespace ompl_mmphys
                 slab, &h.tags.emplace_back(Handles::GeomTag{TagKind::Static, 0, settings_.obstacleFriction}));
         }
 
+        h.fallLimit = lowest - FALL_DEPTH;
         const std::vector<ompl_mm::Link> &links = model_->robot().links();
         h.links.assign(links.size(), nullptr);
         for (std::size_t i = 0; i < links.size(); ++i)
@@ -280,10 +291,14 @@ namespace ompl_mmphys
 
     void PlanWorld::step(double dt)
     {
-        handles_->robotContacts.clear();
+        Handles &h = *handles_;
+        h.robotContacts.clear();
         collide();
-        dWorldQuickStep(handles_->world, dt);
-        dJointGroupEmpty(handles_->contacts);
+        dWorldQuickStep(h.world, dt);
+        dJointGroupEmpty(h.contacts);
+        for (dBodyID body : h.objects)
+            if (dBodyGetPosition(body)[2] < h.fallLimit)
+                dBodyDisable(body);  // fell out of the world: stays where it is
     }
 
     void PlanWorld::collide()

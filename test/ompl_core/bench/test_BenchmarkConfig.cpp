@@ -234,6 +234,9 @@ TEST(ParseBenchmarkConfig, SavePathsAndSimplifyValues)
     EXPECT_TRUE(withBenchmarkLine("simplify", "true").simplify);
     EXPECT_FALSE(withBenchmarkLine("simplify", "0").simplify);
     EXPECT_FALSE(withBenchmarkLine("simplify", "false").simplify);
+    EXPECT_TRUE(withBenchmarkLine("simulate", "1").simulate);
+    EXPECT_FALSE(withBenchmarkLine("simulate", "0").simulate);
+    EXPECT_FALSE(withBenchmarkLine("seed", "1").simulate) << "off unless asked";
 }
 
 TEST(ParseBenchmarkConfig, AcceptsTheBoundsOfEveryNumber)
@@ -332,7 +335,7 @@ TEST(BenchmarkConfigErrors, UnknownBenchmarkKey)
 {
     EXPECT_EQ(benchmarkError("runs", "5"),
               "cfgs/bench.cfg:2: unknown key 'runs' in [benchmark] (known: time_limit, mem_limit, run_count, "
-              "output, save_paths, simplify, seed)");
+              "output, save_paths, simplify, simulate, seed)");
 }
 
 TEST(BenchmarkConfigErrors, DuplicateKeyInASection)

@@ -1,10 +1,13 @@
 #include "ompl_mmphys/simulation/PhysicsCheck.h"
 
 #include "common/MobileBlocked.h"
+#include "ompl_mm/io/PathFile.h"
+#include "ompl_mmphys/io/PhysicsCheckRecord.h"
 
 #include <gtest/gtest.h>
 
-#include <numeric>
+#include <iterator>
+#include <sstream>
 
 using namespace ompl_mm;
 using namespace ompl_mm::test;
@@ -141,4 +144,83 @@ TEST_F(PhysicsCheckTest, BadSettingsAreRefused)
     ompl_mmphys::SimulationSettings settings;
     settings.timeStep = 0.0;
     EXPECT_THROW(ompl_mmphys::simulatePlan(plan(), settings), ompl::Exception);
+}
+
+TEST_F(PhysicsCheckTest, TheReportedErrorsFollowFromThePathFilesSimulatedColumns)
+{
+    const ManipulationPath &path = plan();
+    const PhysicsCheck check = checkPlan(setup_, path);
+    std::stringstream file;
+    writePathFile(file, path, ompl_mmphys::simulatedPoseColumns(check));
+    std::string header, line, last;
+    std::getline(file, header);
+    while (std::getline(file, line))
+        last = line;
+    std::istringstream headerWords(header.substr(2)), lastWords(last);
+    const std::vector<std::string> names{std::istream_iterator<std::string>(headerWords), {}};
+    const std::vector<std::string> values{std::istream_iterator<std::string>(lastWords), {}};
+    ASSERT_EQ(names.size(), values.size());
+    auto column = [&](const std::string &name)
+    {
+        const auto found = std::find(names.begin(), names.end(), name);
+        EXPECT_NE(found, names.end()) << name;
+        return std::stod(values[static_cast<std::size_t>(found - names.begin())]);
+    };
+    for (const ompl_mmphys::ObjectCheck &object : check.objects)
+    {
+        const Eigen::Vector3d planned(column(object.name + ".x"), column(object.name + ".y"),
+                                      column(object.name + ".z"));
+        const Eigen::Vector3d simulated(column("sim." + object.name + ".x"),
+                                        column("sim." + object.name + ".y"),
+                                        column("sim." + object.name + ".z"));
+        EXPECT_NEAR((simulated - planned).norm(), object.positionError, 1e-8) << object.name;
+    }
+}
+
+TEST_F(PhysicsCheckTest, TheRecordCarriesTheCheck)
+{
+    const PhysicsCheck check = checkPlan(setup_, plan());
+    const ompl_core::RunRecord record = ompl_mmphys::physicsCheckRecord(check);
+    ASSERT_NE(record.find("confirmed"), nullptr);
+    EXPECT_EQ(std::get<bool>(record.find("confirmed")->value), check.confirmed);
+    EXPECT_EQ(std::get<double>(record.find("max_position_error_m")->value), check.maxPositionError);
+    EXPECT_EQ(std::get<double>(record.find("objects.obj2.position_error_m")->value),
+              check.objects[1].positionError);
+    EXPECT_EQ(std::get<double>(record.find("action")->value), check.metrics.action);
+}
+
+namespace
+{
+    /** MOBILE BLOCKED without walls and blocks: the floor's edge is open. */
+    Scene openFloorScene()
+    {
+        Scene scene = mobileBlockedScene();
+        scene.obstacles.clear();
+        return scene;
+    }
+
+    class OpenFloorTest : public MobileBlockedTest
+    {
+    protected:
+        OpenFloorTest() : MobileBlockedTest(openFloorScene()) {}
+    };
+}  // namespace
+
+TEST_F(OpenFloorTest, AnObjectPushedOverTheEdgeFallsAndStopsBelow)
+{
+    // a "transit" that in fact shoves obj1 (at x -2.0) over the floor's edge at x -2.5
+    ompl::base::State *start = startCopy();
+    setRobot(space_, start, -1.4, 0.3);
+    ompl::base::State *edge = startCopy();
+    setRobot(space_, edge, -2.5, 0.3);
+    ManipulationPath path(setup_.getSpaceInformation());
+    path.appendFirst(start);
+    path.appendLabelled(edge, TRANSIT);
+    const PhysicsCheck check = checkPlan(setup_, path);
+    const ompl_mmphys::ObjectCheck &obj1 = check.objects[0];
+    EXPECT_TRUE(obj1.offSurface);
+    EXPECT_FALSE(check.confirmed);
+    EXPECT_GT(obj1.positionError, 0.5);
+    EXPECT_LT(obj1.positionError, 3.0) << "stopped a metre below the floor, not falling for ever";
+    EXPECT_LT(check.objects[1].positionError, 1e-3) << "obj2 is far away";
 }
