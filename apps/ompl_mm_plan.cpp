@@ -39,7 +39,8 @@ namespace
         extra.add_options()("path", po::value(&options.path), "write the path's waypoints to this text file")(
             "simulate", po::bool_switch(&options.simulate),
             "execute the plan in physics (ODE): report whether the objects end where planned (JSON: "
-            "physics_check; --path: the simulated poses as columns sim.OBJECT.x ...)");
+            "physics_check; --path: the simulated poses as columns sim.OBJECT.x ...; --html: the "
+            "simulated objects, translucent, beside the planned ones)");
         if (!apps::parseCommandLine(
                 argc, argv,
                 "Usage: ompl_mm_plan SCENE.xml [options]\n"
@@ -138,9 +139,12 @@ namespace
         }
         if (html.isOpen())
         {
+            const std::optional<ompl_mm::CompanionPoses> simulated =
+                check ? std::optional(ompl_mmphys::simulatedCompanions(*check)) : std::nullopt;
             ompl_mm::writeSceneHtml(html.stream(), setup, solved ? &setup.manipulationPath() : nullptr,
                                     scene.name + " · " + options.common.planner + " · seed " +
-                                        std::to_string(options.common.seed));
+                                        std::to_string(options.common.seed),
+                                    simulated ? &*simulated : nullptr);
             html.commit();
         }
         if (path.isOpen())

@@ -3,6 +3,7 @@
 
 #include "ompl_core/run/RunRecord.h"
 #include "ompl_mm/io/PathFile.h"
+#include "ompl_mm/io/SceneHtml.h"
 #include "ompl_mmphys/simulation/PhysicsCheck.h"
 
 namespace ompl_mmphys
@@ -16,4 +17,8 @@ namespace ompl_mmphys
     /** The simulated poses of check's objects at every waypoint, as path file columns after the
         planned ones: "sim.NAME.x", ".y", ".z", ".yaw" per object (metres, radians). */
     ompl_mm::ExtraColumns simulatedPoseColumns(const PhysicsCheck &check);
+
+    /** The simulated poses of check's objects at every waypoint, for the plan page
+        (ompl_mm::writeSceneHtml) to show beside the planned ones, labelled "simulated". */
+    ompl_mm::CompanionPoses simulatedCompanions(const PhysicsCheck &check);
 }  // namespace ompl_mmphys

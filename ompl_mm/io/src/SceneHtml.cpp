@@ -26,6 +26,8 @@ namespace ompl_mm
         constexpr double SURFACE_RISE = 0.001;
         /** Opacity of goal poses. */
         constexpr double GOAL_OPACITY = 0.3;
+        /** Opacity of the companions of the objects (CompanionPoses): seen through, unlike the objects. */
+        constexpr double COMPANION_OPACITY = 0.5;
 
         /** "#rrggbb" of a colour's red, green and blue. */
         std::string cssColour(const Rgba &colour)
@@ -93,8 +95,10 @@ namespace ompl_mm
         class ViewerPlanBuilder
         {
         public:
-            ViewerPlanBuilder(const ManipulationSetup &setup, const std::string &title)
-                : space_(*setup.manipulationSpace()),
+            ViewerPlanBuilder(const ManipulationSetup &setup, const std::string &title,
+                              const CompanionPoses *companions)
+                : companions_(companions),
+                  space_(*setup.manipulationSpace()),
                   scene_(space_.model()->scene()),
                   robot_(space_.model()->robot()),
                   look_(robotLook(scene_, robot_))
@@ -111,9 +115,14 @@ namespace ompl_mm
                 addMovingBodies();
                 addGoals();
                 if (path && path->getStateCount() > 0)
+                {
+                    if (companions_ && companions_->poses.size() != path->getStateCount())
+                        throw ompl::Exception("manipulationViewerPlan",
+                                              "companion poses need one entry per waypoint");
                     addPath(*path);
+                }
                 else
-                    addFrame(start_);
+                    addFrame(start_, 0, 0.0);
                 return plan_;
             }
 
@@ -170,6 +179,18 @@ namespace ompl_mm
                         {scene_.objects[i].name, objectColour(i), 1.0, {objectSolid(scene_.objects[i])}});
                     plan_.legend.push_back({scene_.objects[i].name, objectColour(i)});
                 }
+                if (!companions_)
+                    return;
+                for (unsigned int i = 0; i < scene_.objects.size(); ++i)
+                {
+                    plan_.tracks.push_back(plan_.moving.size() - scene_.objects.size());
+                    plan_.tracks.push_back(plan_.moving.size());
+                    plan_.moving.push_back({scene_.objects[i].name + " (" + companions_->label + ")",
+                                            objectColour(i),
+                                            COMPANION_OPACITY,
+                                            {objectSolid(scene_.objects[i])}});
+                }
+                plan_.legend.push_back({companions_->label + ": translucent twins", ROBOT_COLOUR});
             }
 
             /** The object's solid in its frame: the shape's centre lies half its height above the base. */
@@ -245,13 +266,13 @@ namespace ompl_mm
                         std::max(1.0, std::ceil(segmentLength(a, b) / (VIEWER_SPEED * plan_.frameStep))));
                     for (std::size_t k = 0; k < steps; ++k)
                     {
-                        space_.interpolate(a, b, static_cast<double>(k) / static_cast<double>(steps),
-                                           between.get());
-                        addFrame(between.get());
+                        const double t = static_cast<double>(k) / static_cast<double>(steps);
+                        space_.interpolate(a, b, t, between.get());
+                        addFrame(between.get(), i, t);
                     }
                     addSegment(labels[i], first);
                 }
-                addFrame(path.getState(path.getStateCount() - 1));
+                addFrame(path.getState(path.getStateCount() - 1), path.getStateCount() - 1, 0.0);
                 if (!plan_.segments.empty())
                     plan_.segments.back().last = plan_.frames.size() - 1;
             }
@@ -275,7 +296,8 @@ namespace ompl_mm
                     plan_.legend.push_back({primitiveKindName(label.kind), primitiveColour(label.kind)});
             }
 
-            void addFrame(const ompl::base::State *state)
+            /** The frame of state, which lies t of the way from waypoint `waypoint` to the next. */
+            void addFrame(const ompl::base::State *state, std::size_t waypoint, double t)
             {
                 std::vector<Eigen::Isometry3d> links;
                 robot_.forwardKinematics(space_.robotValues(state), scene_.robot.basePose, links);
@@ -284,10 +306,22 @@ namespace ompl_mm
                     poses.push_back(links[l]);
                 for (unsigned int i = 0; i < space_.objectCount(); ++i)
                     poses.push_back(space_.objectPose(state, i).frame());
+                if (companions_)
+                    for (unsigned int i = 0; i < space_.objectCount(); ++i)
+                    {
+                        const std::vector<std::vector<ObjectPose>> &at = companions_->poses;
+                        const ObjectPose &from = at[waypoint][i];
+                        const ObjectPose &to = at[std::min(waypoint + 1, at.size() - 1)][i];
+                        ObjectPose pose;
+                        pose.position = from.position + t * (to.position - from.position);
+                        pose.yaw = from.yaw + t * std::remainder(to.yaw - from.yaw, 2.0 * M_PI);
+                        poses.push_back(pose.frame());
+                    }
                 plan_.frames.push_back(poses);
                 plan_.toolPath.push_back(space_.toolPosition(state));
             }
 
+            const CompanionPoses *companions_;  ///< may be null
             const ManipulationStateSpace &space_;
             const Scene &scene_;
             const RobotModel &robot_;
@@ -300,14 +334,14 @@ namespace ompl_mm
     }  // namespace
 
     ompl_core::ViewerPlan manipulationViewerPlan(const ManipulationSetup &setup, const ManipulationPath *path,
-                                                 const std::string &title)
+                                                 const std::string &title, const CompanionPoses *companions)
     {
-        return ViewerPlanBuilder(setup, title).build(path);
+        return ViewerPlanBuilder(setup, title, companions).build(path);
     }
 
     void writeSceneHtml(std::ostream &out, const ManipulationSetup &setup, const ManipulationPath *path,
-                        const std::string &title)
+                        const std::string &title, const CompanionPoses *companions)
     {
-        ompl_core::writePlanViewerPage(out, manipulationViewerPlan(setup, path, title));
+        ompl_core::writePlanViewerPage(out, manipulationViewerPlan(setup, path, title, companions));
     }
 }  // namespace ompl_mm

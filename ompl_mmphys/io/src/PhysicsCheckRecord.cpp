@@ -48,4 +48,9 @@ namespace ompl_mmphys
         }
         return columns;
     }
+
+    ompl_mm::CompanionPoses simulatedCompanions(const PhysicsCheck &check)
+    {
+        return {"simulated", check.simulation.statePoses};
+    }
 }  // namespace ompl_mmphys

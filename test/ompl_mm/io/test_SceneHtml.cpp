@@ -375,3 +375,33 @@ TEST(SceneHtml, SurfaceSlabsStandAboveTheObstacleTopsTheyLieOn)
     // the floor slab is drawn light, the tables' tops (at the lowest surface's height) too
     EXPECT_EQ(ompl_core::test::bodyNamed(plan.fixed, "floor")->colour, FLOOR_COLOUR);
 }
+
+TEST_F(SceneHtmlOfSolution, CompanionsFollowTheirPosesAtEveryWaypointBesideThePlannedObjects)
+{
+    // companions one metre east of the planned objects at every waypoint
+    CompanionPoses companions{"shifted", {}};
+    for (std::size_t i = 0; i < path().getStateCount(); ++i)
+    {
+        std::vector<ObjectPose> &poses = companions.poses.emplace_back();
+        for (unsigned int k = 0; k < space().objectCount(); ++k)
+        {
+            poses.push_back(space().objectPose(path().getState(i), k));
+            poses.back().position.x() += 1.0;
+        }
+    }
+    const ompl_core::ViewerPlan plan = manipulationViewerPlan(*setup_, &path(), "companions", &companions);
+    const std::size_t objects = space().objectCount();
+    const std::size_t links = plan_->moving.size() - objects;
+    ASSERT_EQ(plan.moving.size(), links + 2 * objects);
+    EXPECT_EQ(plan.moving[links + objects].name, scene_->objects[0].name + " (shifted)");
+    EXPECT_LT(plan.moving[links + objects].opacity, 1.0);
+    EXPECT_EQ(plan.tracks.size(), 2 * objects) << "the courses of the objects and of their companions";
+    ASSERT_EQ(plan.frames.size(), plan_->frames.size()) << "the same timeline";
+    for (std::size_t f = 0; f < plan.frames.size(); ++f)
+        for (std::size_t k = 0; k < objects; ++k)
+            EXPECT_TRUE(plan.frames[f][links + objects + k].translation().isApprox(
+                plan.frames[f][links + k].translation() + Eigen::Vector3d(1.0, 0.0, 0.0), 1e-9))
+                << "frame " << f << ", object " << k;
+    CompanionPoses tooFew{"short", {companions.poses.front()}};
+    EXPECT_THROW(manipulationViewerPlan(*setup_, &path(), "bad", &tooFew), ompl::Exception);
+}
