@@ -42,9 +42,12 @@ class Path:
 
 class PlanResult(RunResult):
     """What plan() gives: `solved`, `time_s` (the planner's time), `record` (a dict equal to what
-    `ompl_mm_plan --json` writes), `path` (a Path, None when not solved), and the app's files."""
+    `ompl_mm_plan --json` writes, with "physics_check" when simulated), `path` (a Path, None when not
+    solved), `simulated` (when simulated: object name -> n x 4 array of the simulated x, y, z, yaw
+    at every waypoint; else None), and the app's files."""
 
-    def __init__(self, run, title):
+    def __init__(self, run, title, simulate):
+        self.simulated = run.simulate() if simulate and run.solved else None
         super().__init__(run, title)
         self.path = Path(run.path()) if run.solved else None
 
@@ -53,11 +56,12 @@ class PlanResult(RunResult):
         self.run.write_svg(str(file))
 
 
-def plan(scene, planner="mopl", seed=1, time_limit=60.0, params=None):
+def plan(scene, planner="mopl", seed=1, time_limit=60.0, params=None, simulate=False):
     """Plans scene (a Scene or a scene file's path) with the registered planner (MOPL by default),
-    random seed `seed` and `time_limit` seconds; `params` maps planner parameter names to values.
-    The GIL is released while planning; Ctrl-C stops the planner and raises KeyboardInterrupt."""
+    random seed `seed` and `time_limit` seconds; `params` maps planner parameter names to values;
+    `simulate` executes a solution in physics as ompl_mm_plan --simulate does. The GIL is released
+    while planning; Ctrl-C stops the planner and raises KeyboardInterrupt."""
     if isinstance(scene, str):
         scene = load_scene(scene)
     run = solved_run(PlanningRun, scene, planner, seed, time_limit, params)
-    return PlanResult(run, f"{scene.name} · {planner} · seed {seed}")
+    return PlanResult(run, f"{scene.name} · {planner} · seed {seed}", simulate)

@@ -7,6 +7,7 @@
 #include "ompl_mm/io/SceneSvg.h"
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
+#include "ompl_mmphys/io/PhysicsCheckRecord.h"
 
 #include <pybind11/numpy.h>
 
@@ -147,6 +148,34 @@ PYBIND11_MODULE(_ompl_mm, m)
 
     ompl_python::bindPlanningRun<PlanningRun, PlanningRequest, Scene>(
         m, "One planning run as ompl_mm_plan makes it: same seed, same path and record.")
+        .def(
+            "simulate",
+            [](PlanningRun &run)
+            {
+                ompl_mmphys::PhysicsCheck check;
+                {
+                    const py::gil_scoped_release release;
+                    check = ompl_mmphys::checkPlan(run.setup(), solution(run));
+                }
+                run.addRecord("physics_check", ompl_mmphys::physicsCheckRecord(check));
+                const std::vector<MovableObject> &objects = run.setup().model()->scene().objects;
+                const auto &poses = check.simulation.statePoses;
+                py::dict tracks;
+                for (std::size_t k = 0; k < objects.size(); ++k)
+                    tracks[py::str(objects[k].name)] = ompl_python::rows(poses.size(), 4,
+                                                                         [&](std::size_t i, double *out)
+                                                                         {
+                                                                             const ObjectPose &pose = poses[i][k];
+                                                                             out[0] = pose.position.x();
+                                                                             out[1] = pose.position.y();
+                                                                             out[2] = pose.position.z();
+                                                                             out[3] = pose.yaw;
+                                                                         });
+                return tracks;
+            },
+            "Executes the solution in physics (ompl_mmphys::checkPlan, as ompl_mm_plan --simulate), adds "
+            "'physics_check' to the record and returns each object's simulated pose at every waypoint "
+            "(name -> n x 4: x, y, z, yaw).")
         .def(
             "path", [](const PlanningRun &run) { return ManipulationPath(solution(run)); },
             "A copy of the solution (ompl_mm.ManipulationPath); RuntimeError when there is none.")

@@ -263,3 +263,20 @@ def test_ctrl_c_stops_a_setups_solve_and_raises_keyboard_interrupt():
                               f"ompl_mm.ManipulationSetup(ompl_mm.load_scene({scene_path('meka_cleanup')!r}))"
                               ".solve(600)", 1.0)
     assert status == 3 and out.endswith("interrupted\n"), out
+
+
+def test_simulate_gives_the_apps_physics_check(tmp_path):
+    result = ompl_mm.plan(scene_path("mobile_blocked"), seed=3, simulate=True)
+    record, path = tmp_path / "app.json", tmp_path / "app.txt"
+    subprocess.run([APP, scene_path("mobile_blocked"), "--seed", "3", "--simulate", "--json", str(record),
+                    "--path", str(path)], check=True, capture_output=True)
+    with open(record, encoding="utf-8") as f:
+        app_check = json.load(f)["physics_check"]
+    assert without_times(result.record["physics_check"]) == without_times(app_check)
+    names = open(path, encoding="utf-8").readline().split()[1:]
+    rows = numpy.loadtxt(path, usecols=range(2, len(names)), ndmin=2)
+    for name, track in result.simulated.items():
+        assert track.shape == (len(result.path.states), 4)
+        first = names.index(f"sim.{name}.x") - 2
+        numpy.testing.assert_allclose(track, rows[:, first:first + 4], atol=1e-8)
+    assert ompl_mm.plan(scene_path("mobile_blocked"), seed=3).simulated is None
