@@ -224,3 +224,43 @@ TEST_F(OpenFloorTest, AnObjectPushedOverTheEdgeFallsAndStopsBelow)
     EXPECT_LT(obj1.positionError, 3.0) << "stopped a metre below the floor, not falling for ever";
     EXPECT_LT(check.objects[1].positionError, 1e-3) << "obj2 is far away";
 }
+
+TEST_F(OpenFloorTest, ATallBoxPushedLowTipsOver)
+{
+    // obj1 made a tall, narrow box: the disc (its centre 0.25 m up) pushes it below its middle
+    Scene scene = openFloorScene();
+    scene.objects[0].shape.kind = Shape::Kind::Box;
+    scene.objects[0].shape.boxSize = Eigen::Vector3d(0.1, 0.1, 0.8);
+    ManipulationSetup setup(scene);
+    const ManipulationStateSpace &space = *setup.manipulationSpace();
+    ompl::base::State *start = own(space.cloneState(setup.getProblemDefinition()->getStartState(0)));
+    setRobot(space, start, -1.4, 0.3);
+    ompl::base::State *pushed = own(space.cloneState(start));
+    setRobot(space, pushed, -1.9, 0.3);
+    ManipulationPath path(setup.getSpaceInformation());
+    path.appendFirst(start);
+    path.appendLabelled(pushed, TRANSIT);
+    const PhysicsCheck check = checkPlan(setup, path);
+    EXPECT_TRUE(check.objects[0].tipped);
+    EXPECT_GT(check.simulation.finalTilts[0], 60.0 * ompl_mmphys::DEGREE) << "it lies on its side";
+    EXPECT_FALSE(check.confirmed);
+}
+
+TEST(PhysicsCheck, KukaTablesPicksAndPlacesHold)
+{
+    ManipulationSetup setup(loadScene(OMPL_MM_SCENES_DIR "/kuka_table.xml"));
+    setup.mopl()->setSeed(1);
+    ASSERT_TRUE(setup.solve(60.0));
+    const PhysicsCheck check = checkPlan(setup, setup.manipulationPath());
+    EXPECT_TRUE(check.confirmed);
+    EXPECT_TRUE(check.goalHolds);
+    for (const ompl_mmphys::ObjectCheck &object : check.objects)
+    {
+        EXPECT_LT(object.positionError, 0.005) << object.name << ": carried rigidly, placed at rest";
+        EXPECT_FALSE(object.tipped) << object.name;
+    }
+    std::size_t places = 0;
+    for (const ompl_mmphys::Checkpoint &checkpoint : check.simulation.checkpoints)
+        places += checkpoint.kind == PrimitiveKind::Transfer ? 1 : 0;
+    EXPECT_EQ(places, 3u) << "one place per cylinder";
+}
