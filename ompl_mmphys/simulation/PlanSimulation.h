@@ -47,7 +47,8 @@ namespace ompl_mmphys
         double simulatedSeconds{0.0};  ///< the plan's duration, settling included
     };
 
-    /** Executes path in a PlanWorld of its space's model: segment by segment, the robot's joints
+    /** Executes path in a PlanWorld of its space's model, starting from its first state (the
+        robot and the objects where that state puts them, at rest): segment by segment, the robot's joints
         along the straight line between the states (SegmentTiming, from rest to rest), an object
         held from the start of its pickup or transfer segments until they end (then released and
         left to settle), everything else free. The path's labels say what each segment does.

@@ -33,10 +33,11 @@ namespace ompl_mmphys
     class PlanWorld
     {
     public:
-        /** Builds the world of model's scene with the robot at joint values robotStart (size dof)
-            and the objects at their start poses, at rest. */
-        PlanWorld(ompl_mm::ManipulationModelPtr model, const double *robotStart,
-                  const WorldSettings &settings = {});
+        /** Builds the world of model's scene with the robot at joint values robot (size dof) and
+            the objects at poses (one per object of the scene), at rest.
+            @throws ompl::Exception when poses does not hold one pose per object. */
+        PlanWorld(ompl_mm::ManipulationModelPtr model, const double *robot,
+                  const std::vector<ompl_mm::ObjectPose> &poses, const WorldSettings &settings = {});
         /** Frees the ODE world, its bodies and geometry. */
         ~PlanWorld();
         PlanWorld(const PlanWorld &) = delete;             ///< not copyable: it owns ODE handles

@@ -11,6 +11,16 @@ namespace ompl_mmphys
 {
     namespace
     {
+        /** The poses of every object in state. */
+        std::vector<ompl_mm::ObjectPose> posesAt(const ompl_mm::ManipulationStateSpace &space,
+                                                 const ompl::base::State *state)
+        {
+            std::vector<ompl_mm::ObjectPose> poses;
+            for (unsigned int k = 0; k < space.objectCount(); ++k)
+                poses.push_back(space.objectPose(state, k));
+            return poses;
+        }
+
         /** Runs a PlanWorld along the path, recording as it goes. */
         class PlanExecution
         {
@@ -19,7 +29,8 @@ namespace ompl_mmphys
                 : path_(path),
                   space_(*path.getSpaceInformation()->getStateSpace()->as<ompl_mm::ManipulationStateSpace>()),
                   settings_(settings),
-                  world_(space_.model(), space_.robotValues(path.getState(0)), settings.world),
+                  world_(space_.model(), space_.robotValues(path.getState(0)),
+                         posesAt(space_, path.getState(0)), settings.world),
                   dof_(space_.robotDimension())
             {
                 const ompl_mm::RobotModel &robot = space_.model()->robot();

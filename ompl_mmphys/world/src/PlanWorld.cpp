@@ -3,6 +3,7 @@
 #include "ompl_phys/world/OdeGeometry.h"
 
 #include <ode/ode.h>
+#include <ompl/util/Exception.h>
 
 #include <algorithm>
 #include <array>
@@ -154,10 +155,13 @@ namespace ompl_mmphys
         }
     };
 
-    PlanWorld::PlanWorld(ompl_mm::ManipulationModelPtr model, const double *robotStart,
-                         const WorldSettings &settings)
+    PlanWorld::PlanWorld(ompl_mm::ManipulationModelPtr model, const double *robot,
+                         const std::vector<ompl_mm::ObjectPose> &poses, const WorldSettings &settings)
         : model_(std::move(model)), settings_(settings), handles_(std::make_unique<Handles>())
     {
+        if (poses.size() != model_->scene().objects.size())
+            throw ompl::Exception("PlanWorld",
+                                  "one pose per object is needed, got " + std::to_string(poses.size()));
         ompl_phys::initialiseOde();
         dRandSetSeed(ODE_SEED);
         Handles &h = *handles_;
@@ -231,14 +235,13 @@ namespace ompl_mmphys
             dGeomSetData(geom, &h.tags.emplace_back(Handles::GeomTag{
                                    TagKind::Object, static_cast<unsigned int>(i), object.friction}));
             h.centreOffsets.emplace_back(0.0, 0.0, 0.5 * object.shape.height());
-            const Eigen::Isometry3d centre =
-                object.start.frame() * Eigen::Translation3d(h.centreOffsets.back());
+            const Eigen::Isometry3d centre = poses[i].frame() * Eigen::Translation3d(h.centreOffsets.back());
             moveKinematic(body, centre, centre, 1.0);  // at rest
             h.objects.push_back(body);
         }
         h.held.assign(scene.objects.size(), 0);
         h.grasps.assign(scene.objects.size(), Eigen::Isometry3d::Identity());
-        driveRobot(robotStart, robotStart, 1.0);
+        driveRobot(robot, robot, 1.0);
     }
 
     PlanWorld::~PlanWorld() = default;

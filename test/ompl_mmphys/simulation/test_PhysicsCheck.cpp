@@ -69,6 +69,33 @@ TEST_F(PhysicsCheckTest, TheSimulationFollowsThePlanStateByState)
     EXPECT_GT(check.metrics.action, 0.0) << "the robot pushes, so it exerts force";
 }
 
+TEST_F(PhysicsCheckTest, APushSimulatedAloneEndsWhereTheWholePlanPutsItsObject)
+{
+    // the plan's first push run, executed from its first state on its own (the building block of a
+    // push whose outcome is simulated while planning), against the whole plan's execution
+    const ManipulationPath &path = plan();
+    const ompl_mmphys::SimulatedPlan whole = ompl_mmphys::simulatePlan(path);
+    ASSERT_FALSE(whole.checkpoints.empty());
+    const ompl_mmphys::Checkpoint &pushed = whole.checkpoints.front();
+    ASSERT_EQ(pushed.kind, PrimitiveKind::Push);
+    std::size_t first = pushed.state - 1;
+    while (first > 0 && path.label(first - 1) == path.label(pushed.state - 1))
+        --first;
+    ManipulationPath alone(setup_.getSpaceInformation());
+    alone.appendFirst(path.getState(first));
+    for (std::size_t i = first + 1; i <= pushed.state; ++i)
+        alone.appendLabelled(path.getState(i), path.label(i - 1));
+    const ompl_mmphys::SimulatedPlan local = ompl_mmphys::simulatePlan(alone);
+    ASSERT_EQ(local.checkpoints.size(), 1u);
+    EXPECT_LT((local.checkpoints[0].simulated.position - pushed.simulated.position).norm(), 0.001)
+        << "alone " << local.checkpoints[0].simulated.position.transpose() << ", in the plan "
+        << pushed.simulated.position.transpose();
+    EXPECT_GT(
+        (pushed.simulated.position - space_.objectPose(path.getState(first), pushed.object).position).norm(),
+        0.1)
+        << "the push moves its object";
+}
+
 TEST_F(PhysicsCheckTest, TheSameSeedGivesTheSameNumbers)
 {
     const ManipulationPath &path = plan();
