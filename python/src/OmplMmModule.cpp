@@ -24,6 +24,15 @@ namespace
         return run.setup().manipulationPath();
     }
 
+    /** Writes pose as x y z yaw to out[0..3]. */
+    void writePose(const ObjectPose &pose, double *out)
+    {
+        out[0] = pose.position.x();
+        out[1] = pose.position.y();
+        out[2] = pose.position.z();
+        out[3] = pose.yaw;
+    }
+
     /** The path as numpy arrays, in one pass over its states: "states" (n x the space's values),
         "labels" (per segment: kind, object name or ''), "tool" (n x 3) and "objects" (name -> n x 4:
         x y z yaw). */
@@ -48,12 +57,8 @@ namespace
                 toolOut(i, k) = position[k];
             for (std::size_t object = 0; object < objects.size(); ++object)
             {
-                const ObjectPose pose = space.objectPose(path.getState(i), static_cast<unsigned int>(object));
-                auto &out = tracksOut[object];
-                out(i, 0) = pose.position.x();
-                out(i, 1) = pose.position.y();
-                out(i, 2) = pose.position.z();
-                out(i, 3) = pose.yaw;
+                writePose(space.objectPose(path.getState(i), static_cast<unsigned int>(object)),
+                          &tracksOut[object](i, 0));
             }
         }
         py::list labels;
@@ -162,15 +167,8 @@ PYBIND11_MODULE(_ompl_mm, m)
                 const auto &poses = check.simulation.statePoses;
                 py::dict tracks;
                 for (std::size_t k = 0; k < objects.size(); ++k)
-                    tracks[py::str(objects[k].name)] = ompl_python::rows(poses.size(), 4,
-                                                                         [&](std::size_t i, double *out)
-                                                                         {
-                                                                             const ObjectPose &pose = poses[i][k];
-                                                                             out[0] = pose.position.x();
-                                                                             out[1] = pose.position.y();
-                                                                             out[2] = pose.position.z();
-                                                                             out[3] = pose.yaw;
-                                                                         });
+                    tracks[py::str(objects[k].name)] = ompl_python::rows(
+                        poses.size(), 4, [&](std::size_t i, double *out) { writePose(poses[i][k], out); });
                 return tracks;
             },
             "Executes the solution in physics (ompl_mmphys::checkPlan, as ompl_mm_plan --simulate), adds "

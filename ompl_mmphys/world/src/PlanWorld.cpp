@@ -280,9 +280,7 @@ namespace ompl_mmphys
     {
         Handles &h = *handles_;
         h.held.at(object) = 0;
-        dBodySetDynamic(h.objects[object]);
-        setMass(h.objects[object], model_->scene().objects[object].shape,
-                model_->scene().objects[object].mass);
+        dBodySetDynamic(h.objects[object]);  // with the mass it had before it was held
         dBodySetLinearVel(h.objects[object], 0.0, 0.0, 0.0);
         dBodySetAngularVel(h.objects[object], 0.0, 0.0, 0.0);
     }
