@@ -12,6 +12,7 @@
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
 #include "ompl_mmphys/io/PhysicsCheckRecord.h"
+#include "ompl_mmphys/primitives/PhysicsPrimitives.h"
 
 #include <ompl/util/Console.h>
 
@@ -110,8 +111,8 @@ namespace
         ompl_core::PhaseTimes loading;
         const ompl_mm::Scene scene = ompl_mm::loadScene(options.common.scene);
         const auto request = options.common.request<ompl_mm::PlanningRequest>();
-        ompl_mm::PlanningRun &run =
-            apps::keepUntilExit(std::make_unique<ompl_mm::PlanningRun>(scene, request, loading.lap()));
+        ompl_mm::PlanningRun &run = apps::keepUntilExit(std::make_unique<ompl_mm::PlanningRun>(
+            scene, request, loading.lap(), ompl_mmphys::physicsPrimitiveFactory()));
         ompl_mm::ManipulationSetup &setup = run.setup();
         if (options.common.listParams)
         {

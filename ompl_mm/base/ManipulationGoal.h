@@ -37,9 +37,12 @@ namespace ompl_mm
         /** A goal state nearest to the sample (PROJSAMP), written to out: goal coordinates where
             defined, else the sample's defined parts (an object's only when it rests), else random
             values (joints within their limits; objects on a random surface their goal allows, with
-            their start yaw).
+            their start yaw). With keepNearValues, an object coordinate the goal defines keeps the
+            sample's value when that is already within the goal's tolerance: where simulated
+            primitives leave objects near, not on, their goal values, goal states can match them.
             @pre sample's undefined parts may hold anything. */
-        void complete(const PartialState &sample, ompl::base::State *out, ompl::RNG &rng) const;
+        void complete(const PartialState &sample, ompl::base::State *out, ompl::RNG &rng,
+                      bool keepNearValues = false) const;
 
         /** OMPL's hook: a goal state in which every object the goal leaves free keeps its start
             pose (where the scene starts it) and free joints are random within their limits. */
@@ -58,7 +61,7 @@ namespace ompl_mm
     private:
         /** Fills the don't-care coordinates of an object whose goal defines only some. */
         void completeObject(unsigned int object, const ObjectPose *fromSample, ObjectPose &pose,
-                            ompl::RNG &rng) const;
+                            ompl::RNG &rng, bool keepNearValues) const;
 
         const ManipulationStateSpace *space_;
         mutable ompl::RNG rng_;  ///< draws sampleGoal()'s free joints

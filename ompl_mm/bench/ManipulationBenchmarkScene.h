@@ -14,8 +14,9 @@ namespace ompl_mm
     class ManipulationBenchmarkScene : public ompl_core::SetupBenchmarkScene<ManipulationSetup>
     {
     public:
-        /** @throws ompl_core::InputError when the scene's problem cannot be planned. */
-        explicit ManipulationBenchmarkScene(Scene scene);
+        /** Runs on scene, its primitives built by factory.
+            @throws ompl_core::InputError when the scene's problem cannot be planned. */
+        explicit ManipulationBenchmarkScene(Scene scene, PrimitiveFactory factory = PrimitiveFactory());
 
         double timeLimit() const override { return scene_.timeLimit; }
 
@@ -34,6 +35,7 @@ namespace ompl_mm
 
     private:
         Scene scene_;
+        PrimitiveFactory factory_;
         ManipulationSetup logSetup_;  ///< what the logs' Benchmark base is built on
     };
 }  // namespace ompl_mm

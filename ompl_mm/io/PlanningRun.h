@@ -35,9 +35,11 @@ namespace ompl_mm
     {
     public:
         /** Builds the run (the setup copies scene); loadSeconds is the time the caller spent loading the
-           scene (the record's "load" phase). @throws ompl_core::InputError for a fault of the scene (its
-           line), an unknown planner or a bad parameter (where the setting came from). */
-        PlanningRun(const Scene &scene, PlanningRequest request, double loadSeconds = 0.0);
+           scene (the record's "load" phase); factory builds the scene's primitives. @throws
+           ompl_core::InputError for a fault of the scene (its line), an unknown planner or a bad parameter
+           (where the setting came from). */
+        PlanningRun(const Scene &scene, PlanningRequest request, double loadSeconds = 0.0,
+                    const PrimitiveFactory &factory = PrimitiveFactory());
 
         /** Plans within the time limit or until stop becomes true, then re-checks the solution.
             @pre called once. */

@@ -208,6 +208,8 @@ namespace ompl_mm
         static PrimitiveKind blamedKind(const Trajectory &trajectory, std::size_t segment);
         Extension walk(ManipulationTree &tree, int near, const Trajectory &trajectory,
                        const ompl::base::PlannerTerminationCondition &ptc);
+        /** True when the sample defines every object and state has each where the sample does. */
+        bool keepsSampleObjects(const PartialState &sample, const ompl::base::State *state) const;
         /** Extends tree from vertex from towards the object pushed to a random place within the
             clear radius (target: scratch space); an empty extension when no place fits. */
         Extension clearWay(ManipulationTree &tree, int from, unsigned int object, ompl::base::State *target,
@@ -239,6 +241,7 @@ namespace ompl_mm
         const ManipulationStateSpace *space_{nullptr};
         std::unique_ptr<ManipulationMetric> metric_;
         std::unique_ptr<EmptySpacePlanner> esp_;
+        bool simulatedPrimitives_{false};  ///< some primitive does not end where asked
         /** checks the walks' motions continuously: the space information's validator */
         std::shared_ptr<ManipulationMotionValidator> motions_;
         std::unique_ptr<ManipulationSimplifier> simplifier_;

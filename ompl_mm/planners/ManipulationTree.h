@@ -26,8 +26,10 @@ namespace ompl_mm
             ompl::base::State *state;  ///< owned by the tree
             int parent;                ///< -1 for a root
             SegmentLabel label;        ///< of the edge between parent and this vertex
-            std::size_t group;         ///< index of its object configuration
+            std::size_t group;         ///< index of its object configuration, NO_GROUP when not branchable
         };
+        /** The group of a vertex that nearest() never returns. */
+        static constexpr std::size_t NO_GROUP = static_cast<std::size_t>(-1);
 
         /** An empty tree. @pre space and metric outlive it. */
         ManipulationTree(const ManipulationStateSpace *space, const ManipulationMetric *metric, bool forward);
@@ -48,8 +50,9 @@ namespace ompl_mm
         std::size_t rootCount() const { return roots_; }
 
         /** Adds a copy of state with parent (-1 for a new root) and the label of the edge between
-            them; returns its index. */
-        int add(const ompl::base::State *state, int parent, SegmentLabel label);
+            them; returns its index. A vertex that is not branchable (Trajectory::branchable) stays
+            on its branch but nearest() never returns it. */
+        int add(const ompl::base::State *state, int parent, SegmentLabel label, bool branchable = true);
         /** Removes the most recently added vertex. @pre it has no children. */
         void removeLast();
         /** Removes all vertices. */

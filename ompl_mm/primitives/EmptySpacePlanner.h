@@ -46,13 +46,21 @@ namespace ompl_mm
             the order of the primitives from rng; trajectory is reset to start at from and holds the
             waypoints found, whatever the outcome. Once ptc is true it stops before the next
             primitive application and within one (Primitive::propagate with ptc), with the outcome of
-            the waypoints found so far (Partial or Failed). */
-        Outcome plan(const ompl::base::State *from, const ompl::base::State *to, Trajectory &trajectory,
-                     ompl::RNG &rng,
-                     const ompl::base::PlannerTerminationCondition &ptc =
-                         ompl::base::plannerNonTerminatingCondition());
+            the waypoints found so far (Partial or Failed). A primitive that does not end where
+            asked (Primitive::endsWhereAsked) is left out when exactOnly is true; otherwise the
+            objects it moves count as done where it left them, so that the other primitives go
+            on towards the rest of `to` (then the outcome is Partial, as `to` itself is missed). */
+        Outcome plan(
+            const ompl::base::State *from, const ompl::base::State *to, Trajectory &trajectory,
+            ompl::RNG &rng,
+            const ompl::base::PlannerTerminationCondition &ptc = ompl::base::plannerNonTerminatingCondition(),
+            bool exactOnly = false);
 
     private:
+        /** Takes into target the pose of every object that moved from `before` to `after`. */
+        void adoptMovedObjects(const ompl::base::State *before, const ompl::base::State *after,
+                               ompl::base::State *target) const;
+
         PrimitiveTally tally_;
         const ManipulationStateSpace *space_;
         std::vector<PrimitivePtr> primitives_;

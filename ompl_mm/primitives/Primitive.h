@@ -13,6 +13,11 @@
 
 namespace ompl_mm
 {
+    class Primitive;
+    /** Shared ownership of a primitive: the setup, the planner and its empty-space planner hold the
+        same primitives. */
+    using PrimitivePtr = std::shared_ptr<Primitive>;
+
     /** A manipulation primitive in the sense of the MOPL paper (Definition III.1): given a start and
         a target configuration it says whether it applies (isUseful, cheap, no inverse kinematics)
         and, if so, produces waypoints from the start towards the target (propagate), ignoring
@@ -72,11 +77,22 @@ namespace ompl_mm
             that need none); planners report it (MOPL's time_ik_s). */
         virtual double inverseKinematicsTime() const { return 0.0; }
 
+        /** True (the default) when propagate's motions put what they move exactly at the target's
+            values, as kinematic primitives do; false for a primitive whose outcome a simulation
+            decides (a physics-aware push). MOPL's goal tree, whose motions must end exactly at its
+            vertices, leaves such primitives out, and the empty-space planner takes where they
+            leave an object as that object's target from then on. */
+        virtual bool endsWhereAsked() const { return true; }
+        /** For a primitive that does not end where asked, the kinematic primitive whose motions it
+            simulates, for questions a simulation cannot answer cheaply (can the goal be reached at
+            all?); nullptr for the others, which are their own model. */
+        virtual PrimitivePtr kinematicModel() const { return nullptr; }
+
         /** Lets the primitive turn down inverse kinematics solutions whose states `checker` finds
             invalid (say, the arm folded into itself) and try another, so that the waypoints it
             makes are worth connecting; obstacles along its motions stay the connect step's
             concern. Without a checker (the default) every solution is accepted. */
-        void setStateValidityChecker(ompl::base::StateValidityCheckerPtr checker)
+        virtual void setStateValidityChecker(ompl::base::StateValidityCheckerPtr checker)
         {
             checker_ = std::move(checker);
         }
@@ -101,6 +117,8 @@ namespace ompl_mm
             and it slides (slides()) keeping its yaw; -1 when that is not so. */
         int onlySlidingObject(const ompl::base::State *a, const ompl::base::State *b) const;
 
+        /** Keeps why the primitive turned a motion down, for takeRejection(). */
+        void rejectBecause(std::string why) const { rejection_ = std::move(why); }
         /** True when no checker is set or the checker finds state valid; otherwise keeps why for
             takeRejection(). */
         bool acceptable(const ompl::base::State *state) const;
@@ -118,7 +136,4 @@ namespace ompl_mm
         mutable std::string rejection_;  ///< see takeRejection()
     };
 
-    /** Shared ownership of a primitive: the setup, the planner and its empty-space planner hold the
-        same primitives. */
-    using PrimitivePtr = std::shared_ptr<Primitive>;
 }  // namespace ompl_mm

@@ -74,6 +74,8 @@ namespace ompl_mm
 
         /** Adds or replaces a primitive type. */
         void registerType(const std::string &type, Builder builder);
+        /** The builder of a primitive type (empty when the type is unknown): to wrap it in another. */
+        Builder builder(const std::string &type) const;
         /** Makes the primitives' inverse kinematics solvers with factory instead of IkSolver (their
             time still counts as the planner's IK time). */
         void setInverseKinematics(InverseKinematicsFactory factory)

@@ -52,8 +52,11 @@ namespace ompl_mm
 
         /** Drops all waypoints and starts again at a copy of state. */
         void reset(const ompl::base::State *state);
-        /** Adds a copy of a waypoint reached from the last one by the labelled motion. @pre not empty. */
-        void append(const ompl::base::State *state, SegmentLabel label);
+        /** Adds a copy of a waypoint reached from the last one by the labelled motion. A planner may
+            start other motions from it (and from the states on the way to it) only when it and
+            the last waypoint are branchable; a simulated push's waypoints in contact with its object
+            are not, since the robot would drag the object it touches. @pre not empty. */
+        void append(const ompl::base::State *state, SegmentLabel label, bool branchable = true);
         /** Removes waypoints after the first `count` (and their labels). */
         void truncate(std::size_t count);
 
@@ -65,6 +68,8 @@ namespace ompl_mm
         const ompl::base::State *state(std::size_t i) const { return states_[i]; }
         /** The last waypoint. @pre not empty. */
         const ompl::base::State *back() const { return states_.back(); }
+        /** Whether other motions may start at waypoint i (see append). */
+        bool branchable(std::size_t i) const { return branchable_[i] != 0; }
         /** Label of the segment from waypoint i to i + 1. */
         const SegmentLabel &label(std::size_t i) const { return labels_[i]; }
         /** The space of the waypoints. */
@@ -74,5 +79,6 @@ namespace ompl_mm
         const ManipulationStateSpace *space_;
         std::vector<ompl::base::State *> states_;
         std::vector<SegmentLabel> labels_;
+        std::vector<char> branchable_;  ///< per waypoint
     };
 }  // namespace ompl_mm

@@ -7,7 +7,8 @@
 namespace ompl_mmphys
 {
     /** An ompl_mm scene in a benchmark (the cfg's `simulate = 1`): runs as
-        ompl_mm::ManipulationBenchmarkScene's, and each solved run's path checked in physics
+        ompl_mm::ManipulationBenchmarkScene's (with physicsPrimitiveFactory(), so pushes may be
+        physics-aware), and each solved run's path checked in physics
         (checkPlan with default settings), its physics_check record (physicsCheckRecord) among the
         run's properties: physics_check_confirmed, physics_check_max_position_error_m, the metrics
         and the per-object errors. The check's time is no planning time. */

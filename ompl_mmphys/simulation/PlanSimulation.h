@@ -3,27 +3,13 @@
 #pragma once
 
 #include "ompl_mm/geometric/ManipulationPath.h"
-#include "ompl_mmphys/world/PlanWorld.h"
-#include "ompl_phys/metrics/TrajectoryMetrics.h"
+#include "ompl_mmphys/simulation/MotionExecution.h"
 
 #include <vector>
 
 namespace ompl_mmphys
 {
-    /** How a plan is executed. Joints move at most at the smaller of jointSpeed and their URDF
-        velocity limit, and accelerate at most at jointAcceleration; pushes, pickups and transfers go
-        at manipulationSpeedFactor of that speed. */
-    struct SimulationSettings
-    {
-        double timeStep{0.004};               ///< ODE step, seconds
-        double jointSpeed{0.5};               ///< m/s or rad/s
-        double jointAcceleration{1.0};        ///< m/s² or rad/s²
-        double manipulationSpeedFactor{0.5};  ///< share of the speed for segments that move an object
-        double settleTime{0.5};               ///< simulated after a place and at the end, robot still, s
-        WorldSettings world;                  ///< gravity, friction of the robot and obstacles, ODE
-    };
-
-    /** Where the simulation put an object right after a push run or a place, against the plan. */
+    /** Where the simulation put an object after a push or a place, settled, against the plan. */
     struct Checkpoint
     {
         std::size_t state{0};                                       ///< the path state the plan reaches there
@@ -38,7 +24,7 @@ namespace ompl_mmphys
         /** Per path state, every object's simulated pose when the robot reached it (at the last,
             after the final settling: finalPoses). */
         std::vector<std::vector<ompl_mm::ObjectPose>> statePoses;
-        std::vector<Checkpoint> checkpoints;          ///< after every push run and every place
+        std::vector<Checkpoint> checkpoints;          ///< after every push and every place
         std::vector<ompl_mm::ObjectPose> finalPoses;  ///< after the final settling
         std::vector<double> finalTilts;               ///< radians from upright, per object
         /** The tool point at every step, with one move per segment and per settling (the average
@@ -48,10 +34,11 @@ namespace ompl_mmphys
     };
 
     /** Executes path in a PlanWorld of its space's model, starting from its first state (the
-        robot and the objects where that state puts them, at rest): segment by segment, the robot's joints
-        along the straight line between the states (SegmentTiming, from rest to rest), an object
-        held from the start of its pickup or transfer segments until they end (then released and
-        left to settle), everything else free. The path's labels say what each segment does.
+        robot and the objects where that state puts them, at rest), as MotionExecution drives it
+        (the robot's joints along the straight lines between the states, an object held from the
+        start of its pickup or transfer until they end, the world settling after every push and
+        place), everything else free, and a last settling at the end. The path's labels say what
+        each segment does.
         Deterministic: the same path and settings give the same numbers.
         @throws ompl::Exception for an empty path or settings that are not positive. */
     SimulatedPlan simulatePlan(const ompl_mm::ManipulationPath &path,

@@ -9,8 +9,18 @@
 #include <memory>
 #include <vector>
 
+struct dxBody;  // ODE's body, whose handle is a pointer to it
+
 namespace ompl_mmphys
 {
+    /** How far above or below a support surface a simulated object's base may be and still rest
+        on it, metres: contacts sink a little, and objects settle. */
+    constexpr double REST_SNAP = 0.01;
+
+    /** The index of the surface of scene on which a simulated object whose base centre is at base
+        rests (within REST_SNAP of its height, inside its bounds), or -1. */
+    int surfaceUnder(const ompl_mm::Scene &scene, const Eigen::Vector3d &base);
+
     /** What the world needs beyond the scene. The scene gives each object's mass and friction;
         everything else rubs with the friction here. */
     struct WorldSettings
@@ -34,10 +44,14 @@ namespace ompl_mmphys
     {
     public:
         /** Builds the world of model's scene with the robot at joint values robot (size dof) and
-            the objects at poses (one per object of the scene), at rest.
-            @throws ompl::Exception when poses does not hold one pose per object. */
+            the objects at poses (one per object of the scene), at rest; when `present` is not
+            empty, only the objects it marks true are in the world (a smaller world is quicker;
+            asking for an absent object's pose throws).
+            @throws ompl::Exception when poses (or a non-empty present) does not hold one entry per
+            object. */
         PlanWorld(ompl_mm::ManipulationModelPtr model, const double *robot,
-                  const std::vector<ompl_mm::ObjectPose> &poses, const WorldSettings &settings = {});
+                  const std::vector<ompl_mm::ObjectPose> &poses, const WorldSettings &settings = {},
+                  const std::vector<bool> &present = {});
         /** Frees the ODE world, its bodies and geometry. */
         ~PlanWorld();
         PlanWorld(const PlanWorld &) = delete;             ///< not copyable: it owns ODE handles
@@ -59,6 +73,14 @@ namespace ompl_mmphys
         /** Whether object is held. */
         bool isHeld(unsigned int object) const;
 
+        /** Makes object the only free object until thaw(): the others stay still (ODE leaves them
+            out of its solver) unless something touches them, and ODE's random order of
+            constraints starts afresh, so that a push computes alike whichever other objects
+            the world holds. */
+        void isolate(unsigned int object);
+        /** Frees every object that isolate() held still. */
+        void thaw();
+
         /** Advances the world by dt seconds. */
         void step(double dt);
 
@@ -75,6 +97,8 @@ namespace ompl_mmphys
 
     private:
         struct Handles;
+        /** The body of a present object. @throws ompl::Exception for an absent one. */
+        dxBody *objectBody(unsigned int object) const;
         void collide();
         void handlePair(void *geomA, void *geomB);
         void placeHeld(const Eigen::Isometry3d &tool, const Eigen::Isometry3d &nextTool, double dt);

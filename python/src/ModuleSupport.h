@@ -334,15 +334,19 @@ namespace ompl_python
         (scene, planner, seed, time_limit, params: name -> value, named "params['name']" in errors), solve()
        without the GIL (Ctrl-C raises KeyboardInterrupt once the planner has stopped), solved and
        record_json() (the record as the app's --json writes it). Returns the class, for the library's own
-       methods. */
+       methods. Runs are made by makeRun(scene, request) (say, with the library's primitive factory). */
     template <typename Run, typename Request, typename Scene>
-    pybind11::class_<Run> bindPlanningRun(pybind11::module_ &m, const char *doc)
+    pybind11::class_<Run> bindPlanningRun(
+        pybind11::module_ &m, const char *doc,
+        std::function<std::unique_ptr<Run>(const Scene &, Request)> makeRun =
+            [](const Scene &scene, Request request)
+        { return std::make_unique<Run>(scene, std::move(request)); })
     {
         namespace py = pybind11;
         return py::class_<Run>(m, "PlanningRun", doc)
             .def(py::init(
-                     [](const Scene &scene, const std::string &planner, std::uint32_t seed, double timeLimit,
-                        const std::map<std::string, py::object> &params)
+                     [makeRun](const Scene &scene, const std::string &planner, std::uint32_t seed,
+                               double timeLimit, const std::map<std::string, py::object> &params)
                      {
                          Request request;
                          request.planner = planner;
@@ -351,7 +355,7 @@ namespace ompl_python
                          for (const auto &[name, value] : params)
                              request.parameters.push_back(
                                  {name, parameterText(value), {"params['" + name + "']", 0}});
-                         return std::make_unique<Run>(scene, std::move(request));
+                         return makeRun(scene, std::move(request));
                      }),
                  py::arg("scene"), py::arg("planner"), py::arg("seed"), py::arg("time_limit"),
                  py::arg("params"))

@@ -8,6 +8,7 @@
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
 #include "ompl_mmphys/io/PhysicsCheckRecord.h"
+#include "ompl_mmphys/primitives/PhysicsPrimitives.h"
 
 #include <pybind11/numpy.h>
 
@@ -131,7 +132,12 @@ PYBIND11_MODULE(_ompl_mm, m)
         m, "ManipulationSetup",
         "OMPL's SimpleSetup for a manipulation scene (C++ ompl_mm::ManipulationSetup).");
     setup
-        .def(py::init<const Scene &>(), py::arg("scene"),
+        .def(py::init(
+                 [](const Scene &scene) {
+                     return std::make_unique<ManipulationSetup>(scene,
+                                                                ompl_mmphys::physicsPrimitiveFactory());
+                 }),
+             py::arg("scene"),
              "Builds the problem and the scene's planner with its parameters; ompl_core.InputError at a "
              "faulty line of the scene or its robot.")
         .def("selectPlanner", &ManipulationSetup::selectPlanner, py::arg("name"),
@@ -152,7 +158,12 @@ PYBIND11_MODULE(_ompl_mm, m)
         setup, static_cast<ompl_python::PlannerHandle::ApplyParameters>(&ManipulationSetup::applyParameters));
 
     ompl_python::bindPlanningRun<PlanningRun, PlanningRequest, Scene>(
-        m, "One planning run as ompl_mm_plan makes it: same seed, same path and record.")
+        m, "One planning run as ompl_mm_plan makes it: same seed, same path and record.",
+        [](const Scene &scene, PlanningRequest request)
+        {
+            return std::make_unique<PlanningRun>(scene, std::move(request), 0.0,
+                                                 ompl_mmphys::physicsPrimitiveFactory());
+        })
         .def(
             "simulate",
             [](PlanningRun &run)

@@ -5,6 +5,7 @@
 #include "ompl_mm/bench/ManipulationBenchmarkScene.h"
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mmphys/bench/SimulatedBenchmarkScene.h"
+#include "ompl_mmphys/primitives/PhysicsPrimitives.h"
 #include "ompl_phys/bench/PhysicsBenchmarkScene.h"
 #include "ompl_phys/scene/PhysicsSceneLoader.h"
 
@@ -84,7 +85,8 @@ namespace ompl_bench
         if (kind == SceneKind::Manipulation && simulate)
             return std::make_unique<ompl_mmphys::SimulatedBenchmarkScene>(ompl_mm::loadScene(problem.scene));
         if (kind == SceneKind::Manipulation)
-            return std::make_unique<ompl_mm::ManipulationBenchmarkScene>(ompl_mm::loadScene(problem.scene));
+            return std::make_unique<ompl_mm::ManipulationBenchmarkScene>(
+                ompl_mm::loadScene(problem.scene), ompl_mmphys::physicsPrimitiveFactory());
         return std::make_unique<ompl_phys::PhysicsBenchmarkScene>(
             std::make_shared<const ompl_phys::PhysicsScene>(ompl_phys::loadPhysicsScene(problem.scene)));
     }

@@ -133,7 +133,7 @@ namespace ompl_mm
     }
 
     void ManipulationGoal::completeObject(unsigned int object, const ObjectPose *fromSample, ObjectPose &pose,
-                                          ompl::RNG &rng) const
+                                          ompl::RNG &rng, bool keepNearValues) const
     {
         const Scene &scene = space_->model()->scene();
         const ObjectGoal *goal = objects_[object];
@@ -150,12 +150,17 @@ namespace ompl_mm
                              s.height};
             pose.yaw = scene.objects[object].start.yaw;
         }
+        const bool sampled = fromSample && pose.position == fromSample->position;
         if (goal)
         {
             for (int k = 0; k < 3; ++k)
-                if (goal->position[k])
+                if (goal->position[k] &&
+                    !(keepNearValues && sampled &&
+                      std::abs(pose.position[k] - *goal->position[k]) <= goal->positionTolerance))
                     pose.position[k] = *goal->position[k];
-            if (goal->yaw)
+            if (goal->yaw &&
+                !(keepNearValues && sampled &&
+                  std::abs(std::remainder(pose.yaw - *goal->yaw, 2.0 * M_PI)) <= goal->yawTolerance))
                 pose.yaw = *goal->yaw;
         }
         // the goal's x, y may move the object off the sampled surface: rest it on one that fits
@@ -168,7 +173,8 @@ namespace ompl_mm
                 }
     }
 
-    void ManipulationGoal::complete(const PartialState &sample, ompl::base::State *out, ompl::RNG &rng) const
+    void ManipulationGoal::complete(const PartialState &sample, ompl::base::State *out, ompl::RNG &rng,
+                                    bool keepNearValues) const
     {
         double *q = space_->robotValues(out);
         const double *sampleQ = space_->robotValues(sample.state());
@@ -188,7 +194,7 @@ namespace ompl_mm
             ObjectPose samplePose;
             if (sample.objectDefined(i))
                 samplePose = space_->objectPose(sample.state(), i);
-            completeObject(i, sample.objectDefined(i) ? &samplePose : nullptr, pose, rng);
+            completeObject(i, sample.objectDefined(i) ? &samplePose : nullptr, pose, rng, keepNearValues);
             space_->setObjectPose(out, i, pose);
         }
     }

@@ -8,8 +8,8 @@
 
 namespace ompl_mm
 {
-    ManipulationBenchmarkScene::ManipulationBenchmarkScene(Scene scene)
-        : scene_(std::move(scene)), logSetup_(scene_)
+    ManipulationBenchmarkScene::ManipulationBenchmarkScene(Scene scene, PrimitiveFactory factory)
+        : scene_(std::move(scene)), factory_(std::move(factory)), logSetup_(scene_, factory_)
     {
     }
 
@@ -24,7 +24,7 @@ namespace ompl_mm
         std::uint32_t seed) const
     {
         ompl_core::reseedOmpl(seed);
-        auto setup = std::make_unique<ManipulationSetup>(scene_);
+        auto setup = std::make_unique<ManipulationSetup>(scene_, factory_);
         if (setup->goalFault())  // the scene is the benchmark's input
             throw *setup->goalFault();
         if (planner.type != scene_.planner)

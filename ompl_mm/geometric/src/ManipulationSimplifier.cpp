@@ -300,7 +300,7 @@ namespace ompl_mm
     {
         Trajectory replanned(space_);
         const EmptySpacePlanner::Outcome outcome =
-            planner_.plan(path.getState(first), path.getState(last), replanned, rng, ptc);
+            planner_.plan(path.getState(first), path.getState(last), replanned, rng, ptc, true);
         if (outcome == EmptySpacePlanner::Outcome::AlreadyThere)
             replanned.append(path.getState(last), {PrimitiveKind::Transit, -1});
         else if (outcome != EmptySpacePlanner::Outcome::Reached)

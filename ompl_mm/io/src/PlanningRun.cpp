@@ -10,13 +10,14 @@
 
 namespace ompl_mm
 {
-    PlanningRun::PlanningRun(const Scene &scene, PlanningRequest request, double loadSeconds)
+    PlanningRun::PlanningRun(const Scene &scene, PlanningRequest request, double loadSeconds,
+                             const PrimitiveFactory &factory)
         : SetupRun(std::move(request), loadSeconds)
     {
         if (request_.planner.empty())
             request_.planner = scene.planner;
         ompl_core::reseedOmpl(request_.seed);
-        setup_ = std::make_unique<ManipulationSetup>(scene);
+        setup_ = std::make_unique<ManipulationSetup>(scene, factory);
         if (setup_->goalFault())  // the scene is the run's input: an impossible goal is an input error
             throw *setup_->goalFault();
         if (request_.planner != scene.planner)

@@ -183,6 +183,8 @@ namespace ompl_mm
             throw ompl::Exception(getName(), "has no primitives: call setPrimitives() first");
         checkParameters();
         esp_ = std::make_unique<EmptySpacePlanner>(space_, primitives_);
+        simulatedPrimitives_ = std::any_of(primitives_.begin(), primitives_.end(),
+                                           [](const PrimitivePtr &p) { return !p->endsWhereAsked(); });
         simplifier_ = std::make_unique<ManipulationSimplifier>(si_);  // throws without the validator
         // the space information's own validator, so that the sweeps the walks found free are
         // remembered for the path's re-check
@@ -281,7 +283,7 @@ namespace ompl_mm
         double rootDistance = 0.0;
         {
             ScopedTimer timer(statistics_.samplingTime);
-            goal_->complete(sample, root, rng_);
+            goal_->complete(sample, root, rng_, simulatedPrimitives_);
             metric_->makeQuery(sample, false, query_);
             MetricPoint rootPoint;
             metric_->makePoint(root, rootPoint);
@@ -290,6 +292,9 @@ namespace ompl_mm
         // an invalid root cannot compete: then the tree alone answers
         const bool rootValid = si_->isValid(root);
         int index = -1;
+        // with simulated primitives, which leave objects near their goals, a root that keeps every
+        // object where the sample has it is the one the sample can reach by exact motions
+        if (!(simulatedPrimitives_ && rootValid && keepsSampleObjects(sample, root)))
         {
             ScopedTimer timer(statistics_.nearestTime);
             index = tree.nearest(query_, nullptr,
@@ -305,6 +310,14 @@ namespace ompl_mm
         return index;
     }
 
+    bool MOPL::keepsSampleObjects(const PartialState &sample, const ob::State *state) const
+    {
+        for (unsigned int i = 0; i < space_->objectCount(); ++i)
+            if (!sample.objectDefined(i) || space_->objectMoves(sample.state(), state, i))
+                return false;
+        return true;
+    }
+
     MOPL::Extension MOPL::extend(ManipulationTree &tree, int near, const ob::State *target,
                                  const ob::PlannerTerminationCondition &ptc)
     {
@@ -312,9 +325,11 @@ namespace ompl_mm
         EmptySpacePlanner::Outcome outcome;
         {
             ScopedTimer timer(statistics_.propagateTime);
-            // the backward tree needs a motion that ends exactly at its vertex
-            outcome = tree.forward() ? esp_->plan(tree.vertex(near).state, target, trajectory, rng_, ptc)
-                                     : esp_->plan(target, tree.vertex(near).state, trajectory, rng_, ptc);
+            // the backward tree needs a motion that ends exactly at its vertex: no simulated
+            // primitives there
+            outcome = tree.forward()
+                          ? esp_->plan(tree.vertex(near).state, target, trajectory, rng_, ptc)
+                          : esp_->plan(target, tree.vertex(near).state, trajectory, rng_, ptc, true);
         }
         if (outcome == EmptySpacePlanner::Outcome::AlreadyThere)
             return {near, true};
@@ -345,6 +360,9 @@ namespace ompl_mm
             const ob::State *start = trajectory.state(forward ? i : i + 1);
             const ob::State *end = trajectory.state(forward ? i + 1 : i);
             const SegmentLabel label = trajectory.label(i);
+            // on the way between waypoints, other motions may start only where both ends allow it
+            const bool endBranchable = trajectory.branchable(forward ? i + 1 : i);
+            const bool wayBranchable = endBranchable && trajectory.branchable(forward ? i : i + 1);
             // pieces a whole vertex step long, the last one the rest, which takes in a rest shorter
             // than a connect step: shorter pieces would grow the trees (and the nearest-neighbour
             // search) with no gain in reach
@@ -374,7 +392,8 @@ namespace ompl_mm
                     if (segmentLength(from, to) < connectStep_)
                         break;
                 }
-                extension.last = parent = tree.add(to, parent, label);
+                extension.last = parent =
+                    tree.add(to, parent, label, k == pieces && !blocked ? endBranchable : wayBranchable);
                 sampler_->noteVertex(to);
                 std::swap(from, to);
             }
@@ -553,7 +572,9 @@ namespace ompl_mm
                 return ob::PlannerStatus::EXACT_SOLUTION;
             }
 
-            // try to connect the other tree to the new vertex
+            // try to connect the other tree to the new vertex, unless no motion may start there
+            if (a.vertex(grown.last).group == ManipulationTree::NO_GROUP)
+                continue;
             space_->copyState(connectTarget.state(), a.vertex(grown.last).state);
             connectTarget.defineAll();
             const int nearB = nearest(b, connectTarget, &newRoot);

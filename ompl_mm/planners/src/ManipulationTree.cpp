@@ -36,13 +36,21 @@ namespace ompl_mm
         clear();
     }
 
-    int ManipulationTree::add(const ompl::base::State *state, int parent, SegmentLabel label)
+    int ManipulationTree::add(const ompl::base::State *state, int parent, SegmentLabel label, bool branchable)
     {
         assert(parent < static_cast<int>(vertices_.size()));
         const int index = static_cast<int>(vertices_.size());
         Vertex vertex{space_->cloneState(state), parent, label, groups_.size()};
+        if (!branchable)
+        {
+            vertex.group = NO_GROUP;
+            vertices_.push_back(vertex);
+            roots_ += parent < 0 ? 1 : 0;
+            return index;
+        }
         metric_->makePoint(vertex.state, point_);
-        if (parent < 0 || space_->anyObjectMoves(state, vertices_[parent].state))
+        if (parent < 0 || vertices_[parent].group == NO_GROUP ||
+            space_->anyObjectMoves(state, vertices_[parent].state))
             groups_.push_back({point_, {}, {}, newBounds()});
         else
             vertex.group = vertices_[parent].group;
@@ -66,6 +74,12 @@ namespace ompl_mm
     {
         if (vertices_.back().parent < 0)
             --roots_;
+        if (vertices_.back().group == NO_GROUP)
+        {
+            space_->freeState(vertices_.back().state);
+            vertices_.pop_back();
+            return;
+        }
         // bounds may stay larger than the members: still valid
         Group &group = groups_[vertices_.back().group];
         group.members.pop_back();

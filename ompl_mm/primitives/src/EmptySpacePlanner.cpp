@@ -17,7 +17,8 @@ namespace ompl_mm
     EmptySpacePlanner::Outcome EmptySpacePlanner::plan(const ompl::base::State *from,
                                                        const ompl::base::State *to, Trajectory &trajectory,
                                                        ompl::RNG &rng,
-                                                       const ompl::base::PlannerTerminationCondition &ptc)
+                                                       const ompl::base::PlannerTerminationCondition &ptc,
+                                                       bool exactOnly)
     {
         trajectory.reset(from);
         if (space_->equalStates(from, to))
@@ -28,30 +29,54 @@ namespace ompl_mm
             std::swap(order_[i - 1], order_[rng.uniformInt(0, static_cast<int>(i) - 1)]);
         std::fill(failed_.begin(), failed_.end(), 0);
 
+        // what is left to reach: `to`, but with the objects that simulated primitives moved
+        // where they left them
+        ompl::base::State *target = space_->cloneState(to);
+        ompl::base::State *before = space_->allocState();
         unsigned int steps = 0;
         bool useful = true;
-        while (useful && steps < MAX_STEPS && !ptc)
+        bool done = false;
+        while (useful && steps < MAX_STEPS && !ptc && !done)
         {
             useful = false;
             for (std::size_t index : order_)
             {
                 const Primitive &primitive = *primitives_[index];
-                if (failed_[index] || !primitive.isUseful(trajectory.back(), to))
+                if (failed_[index] || (exactOnly && !primitive.endsWhereAsked()) ||
+                    !primitive.isUseful(trajectory.back(), target))
                     continue;
                 if (ptc)
                     break;  // out of time: what was found so far
                 useful = true;
                 ++steps;
-                const bool found = primitive.propagate(trajectory.back(), to, trajectory, ptc);
+                space_->copyState(before, trajectory.back());
+                const bool found = primitive.propagate(trajectory.back(), target, trajectory, ptc);
                 tally_.attempt(primitive.kind(), found, found ? "" : primitive.takeRejection());
                 if (found)
                     std::fill(failed_.begin(), failed_.end(), 0);
                 else
                     failed_[index] = 1;
-                if (space_->equalStates(trajectory.back(), to))
-                    return Outcome::Reached;
+                if (found && !primitive.endsWhereAsked())
+                    adoptMovedObjects(before, trajectory.back(), target);
+                // `to` itself, or as near as the simulated primitives came
+                done = space_->equalStates(trajectory.back(), target);
+                if (done)
+                    break;
             }
         }
+        const bool reached = done && space_->equalStates(trajectory.back(), to);
+        space_->freeState(before);
+        space_->freeState(target);
+        if (reached)
+            return Outcome::Reached;
         return trajectory.size() > 1 ? Outcome::Partial : Outcome::Failed;
+    }
+
+    void EmptySpacePlanner::adoptMovedObjects(const ompl::base::State *before, const ompl::base::State *after,
+                                              ompl::base::State *target) const
+    {
+        for (unsigned int k = 0; k < space_->objectCount(); ++k)
+            if (space_->objectMoves(before, after, k))
+                space_->setObjectPose(target, k, space_->objectPose(after, k));
     }
 }  // namespace ompl_mm

@@ -44,11 +44,33 @@ namespace ompl_mm
             return std::make_shared<Grasping>(space, settings, factory);
         }
 
+        /** Reads a push's `model`: "kinematic" (the default) is this library's push; "physics",
+            a push simulated while planning, is built by ompl_mmphys's factory, not this one.
+            @throws ompl_core::InputError at the push's line for any other model. */
+        void requireKinematicModel(const PrimitiveParameters &params)
+        {
+            const std::string model = params.text("model", "kinematic");
+            const PrimitiveSpec &spec = params.spec();
+            if (model == "physics")
+                throw ompl_core::InputError(
+                    spec.where, "<" + spec.type +
+                                    " model=\"physics\"> simulates every push while planning, which needs "
+                                    "the physics library: build the setup with ompl_mmphys's "
+                                    "physicsPrimitiveFactory() (ompl_mm_plan, ompl_mm_benchmark and the "
+                                    "Python module do)");
+            if (model != "kinematic")
+                throw ompl_core::InputError(spec.where, "<" + spec.type +
+                                                            "> parameter 'model' must be kinematic or "
+                                                            "physics, got '" +
+                                                            model + "'");
+        }
+
         /** An arm push called type whose hand pose defaults to `hand` (its tilts and turn). */
         PrimitiveFactory::Builder armPush(const std::string &type, ArmPush::Settings hand)
         {
             return [type, hand](const ManipulationStateSpace *space, const PrimitiveParameters &params)
             {
+                requireKinematicModel(params);
                 ArmPush::Settings settings = hand;
                 settings.standoff = params.number("standoff", settings.standoff);
                 settings.heightOffset = params.number("height_offset", settings.heightOffset);
@@ -175,8 +197,12 @@ namespace ompl_mm
     {
         registerType("transit", [](const ManipulationStateSpace *space, const PrimitiveParameters &)
                      { return std::make_shared<Transit>(space); });
-        registerType("push_mobile", [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
-                     { return std::make_shared<PushMobile>(space, params.optionalNumber("standoff")); });
+        registerType("push_mobile",
+                     [](const ManipulationStateSpace *space, const PrimitiveParameters &params)
+                     {
+                         requireKinematicModel(params);
+                         return std::make_shared<PushMobile>(space, params.optionalNumber("standoff"));
+                     });
         // the hands of the MOPL paper's KUKA scenes
         registerType("push_interior", armPush("push_interior", hand(0.0, 65.0, 0.0)));
         registerType("push_exterior", armPush("push_exterior", hand(0.0, 65.0, 180.0)));
@@ -204,6 +230,12 @@ namespace ompl_mm
     void PrimitiveFactory::registerType(const std::string &type, Builder builder)
     {
         builders_[type] = std::move(builder);
+    }
+
+    PrimitiveFactory::Builder PrimitiveFactory::builder(const std::string &type) const
+    {
+        const auto it = builders_.find(type);
+        return it == builders_.end() ? Builder() : it->second;
     }
 
     std::vector<PrimitivePtr> PrimitiveFactory::build(const std::vector<PrimitiveSpec> &specs,

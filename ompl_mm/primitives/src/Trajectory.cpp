@@ -21,10 +21,14 @@ namespace ompl_mm
     Trajectory::Trajectory(const ManipulationStateSpace *space) : space_(space) {}
 
     Trajectory::Trajectory(Trajectory &&other) noexcept
-        : space_(other.space_), states_(std::move(other.states_)), labels_(std::move(other.labels_))
+        : space_(other.space_),
+          states_(std::move(other.states_)),
+          labels_(std::move(other.labels_)),
+          branchable_(std::move(other.branchable_))
     {
         other.states_.clear();
         other.labels_.clear();
+        other.branchable_.clear();
     }
 
     Trajectory::~Trajectory()
@@ -36,12 +40,14 @@ namespace ompl_mm
     {
         truncate(0);
         states_.push_back(space_->cloneState(state));
+        branchable_.push_back(1);
     }
 
-    void Trajectory::append(const ompl::base::State *state, SegmentLabel label)
+    void Trajectory::append(const ompl::base::State *state, SegmentLabel label, bool branchable)
     {
         states_.push_back(space_->cloneState(state));
         labels_.push_back(label);
+        branchable_.push_back(branchable ? 1 : 0);
     }
 
     void Trajectory::truncate(std::size_t count)
@@ -54,5 +60,6 @@ namespace ompl_mm
             states_.pop_back();
         }
         labels_.resize(count > 0 ? count - 1 : 0);
+        branchable_.resize(states_.size());
     }
 }  // namespace ompl_mm

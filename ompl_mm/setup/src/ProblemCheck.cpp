@@ -96,7 +96,12 @@ namespace ompl_mm
                          "the goal cannot be reached", " at their goal poses");
 
         // each object the goal moves: can the primitives move it there, obstacles aside?
-        EmptySpacePlanner planner(&space_, primitives);
+        // simulated primitives answer through the kinematic ones they simulate: a simulated push
+        // ends near its target, never exactly on it
+        std::vector<PrimitivePtr> models;
+        for (const PrimitivePtr &primitive : primitives)
+            models.push_back(primitive->kinematicModel() ? primitive->kinematicModel() : primitive);
+        EmptySpacePlanner planner(&space_, models);
         ompl::RNG rng(1);
         Trajectory trajectory(&space_);
         ompl::base::State *target = space_.cloneState(start);

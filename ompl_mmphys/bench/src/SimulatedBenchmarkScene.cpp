@@ -1,11 +1,12 @@
 #include "ompl_mmphys/bench/SimulatedBenchmarkScene.h"
 
 #include "ompl_mmphys/io/PhysicsCheckRecord.h"
+#include "ompl_mmphys/primitives/PhysicsPrimitives.h"
 
 namespace ompl_mmphys
 {
     SimulatedBenchmarkScene::SimulatedBenchmarkScene(ompl_mm::Scene scene)
-        : ompl_mm::ManipulationBenchmarkScene(std::move(scene))
+        : ompl_mm::ManipulationBenchmarkScene(std::move(scene), physicsPrimitiveFactory())
     {
     }
 

@@ -6,25 +6,6 @@
 
 namespace ompl_mmphys
 {
-    namespace
-    {
-        /** How far above or below a support surface a simulated object's base may be and still rest
-            on it, metres: contacts sink a little, and objects settle. */
-        constexpr double REST_SNAP = 0.01;
-
-        /** The index of the surface a simulated object rests on, or -1. */
-        int surfaceUnder(const ompl_mm::Scene &scene, const Eigen::Vector3d &base)
-        {
-            for (std::size_t i = 0; i < scene.surfaces.size(); ++i)
-            {
-                const ompl_mm::SupportSurface &surface = scene.surfaces[i];
-                if (surface.contains(base.x(), base.y()) && std::abs(base.z() - surface.height) < REST_SNAP)
-                    return static_cast<int>(i);
-            }
-            return -1;
-        }
-    }  // namespace
-
     double yawDifference(double a, double b)
     {
         return std::abs(std::remainder(a - b, 360.0 * DEGREE));

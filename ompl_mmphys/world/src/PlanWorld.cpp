@@ -103,6 +103,17 @@ namespace ompl_mmphys
         }
     }  // namespace
 
+    int surfaceUnder(const ompl_mm::Scene &scene, const Eigen::Vector3d &base)
+    {
+        for (std::size_t i = 0; i < scene.surfaces.size(); ++i)
+        {
+            const ompl_mm::SupportSurface &surface = scene.surfaces[i];
+            if (surface.contains(base.x(), base.y()) && std::abs(base.z() - surface.height) < REST_SNAP)
+                return static_cast<int>(i);
+        }
+        return -1;
+    }
+
     /** ODE handles and what ODE keeps pointers into (geom tags, meshes, contact feedback). */
     struct PlanWorld::Handles
     {
@@ -156,12 +167,16 @@ namespace ompl_mmphys
     };
 
     PlanWorld::PlanWorld(ompl_mm::ManipulationModelPtr model, const double *robot,
-                         const std::vector<ompl_mm::ObjectPose> &poses, const WorldSettings &settings)
+                         const std::vector<ompl_mm::ObjectPose> &poses, const WorldSettings &settings,
+                         const std::vector<bool> &present)
         : model_(std::move(model)), settings_(settings), handles_(std::make_unique<Handles>())
     {
         if (poses.size() != model_->scene().objects.size())
             throw ompl::Exception("PlanWorld",
                                   "one pose per object is needed, got " + std::to_string(poses.size()));
+        if (!present.empty() && present.size() != poses.size())
+            throw ompl::Exception(
+                "PlanWorld", "one presence flag per object is needed, got " + std::to_string(present.size()));
         ompl_phys::initialiseOde();
         dRandSetSeed(ODE_SEED);
         Handles &h = *handles_;
@@ -225,8 +240,12 @@ namespace ompl_mmphys
             h.links[i] = body;
         }
 
+        h.objects.assign(scene.objects.size(), nullptr);
+        h.centreOffsets.assign(scene.objects.size(), Eigen::Vector3d::Zero());
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
         {
+            if (!present.empty() && !present[i])
+                continue;
             const ompl_mm::MovableObject &object = scene.objects[i];
             dBodyID body = dBodyCreate(h.world);
             setMass(body, object.shape, object.mass);
@@ -234,10 +253,10 @@ namespace ompl_mmphys
             dGeomSetBody(geom, body);
             dGeomSetData(geom, &h.tags.emplace_back(Handles::GeomTag{
                                    TagKind::Object, static_cast<unsigned int>(i), object.friction}));
-            h.centreOffsets.emplace_back(0.0, 0.0, 0.5 * object.shape.height());
-            const Eigen::Isometry3d centre = poses[i].frame() * Eigen::Translation3d(h.centreOffsets.back());
+            h.centreOffsets[i] = Eigen::Vector3d(0.0, 0.0, 0.5 * object.shape.height());
+            const Eigen::Isometry3d centre = poses[i].frame() * Eigen::Translation3d(h.centreOffsets[i]);
             moveKinematic(body, centre, centre, 1.0);  // at rest
-            h.objects.push_back(body);
+            h.objects[i] = body;
         }
         h.held.assign(scene.objects.size(), 0);
         h.grasps.assign(scene.objects.size(), Eigen::Isometry3d::Identity());
@@ -245,6 +264,15 @@ namespace ompl_mmphys
     }
 
     PlanWorld::~PlanWorld() = default;
+
+    dBodyID PlanWorld::objectBody(unsigned int object) const
+    {
+        dBodyID body = handles_->objects.at(object);
+        if (!body)
+            throw ompl::Exception("PlanWorld", "object '" + model_->scene().objects[object].name +
+                                                   "' was left out of this world");
+        return body;
+    }
 
     void PlanWorld::driveRobot(const double *from, const double *to, double dt)
     {
@@ -270,19 +298,37 @@ namespace ompl_mmphys
     void PlanWorld::hold(unsigned int object)
     {
         Handles &h = *handles_;
-        h.grasps.at(object) = h.tool.inverse() * bodyFrame(h.objects[object]);
+        dBodyID body = objectBody(object);
+        h.grasps.at(object) = h.tool.inverse() * bodyFrame(body);
         h.held[object] = 1;
-        dBodySetKinematic(h.objects[object]);
+        dBodySetKinematic(body);
         placeHeld(h.tool, h.tool, 1.0);
     }
 
     void PlanWorld::release(unsigned int object)
     {
         Handles &h = *handles_;
+        dBodyID body = objectBody(object);
         h.held.at(object) = 0;
-        dBodySetDynamic(h.objects[object]);  // with the mass it had before it was held
-        dBodySetLinearVel(h.objects[object], 0.0, 0.0, 0.0);
-        dBodySetAngularVel(h.objects[object], 0.0, 0.0, 0.0);
+        dBodySetDynamic(body);  // with the mass it had before it was held
+        dBodySetLinearVel(body, 0.0, 0.0, 0.0);
+        dBodySetAngularVel(body, 0.0, 0.0, 0.0);
+    }
+
+    void PlanWorld::isolate(unsigned int object)
+    {
+        const Handles &h = *handles_;
+        for (std::size_t i = 0; i < h.objects.size(); ++i)
+            if (h.objects[i] && i != object && !h.held[i])
+                dBodyDisable(h.objects[i]);
+        dRandSetSeed(ODE_SEED);
+    }
+
+    void PlanWorld::thaw()
+    {
+        for (dBodyID body : handles_->objects)
+            if (body && dBodyGetPosition(body)[2] >= handles_->fallLimit)
+                dBodyEnable(body);
     }
 
     bool PlanWorld::isHeld(unsigned int object) const
@@ -298,7 +344,7 @@ namespace ompl_mmphys
         dWorldQuickStep(h.world, dt);
         dJointGroupEmpty(h.contacts);
         for (dBodyID body : h.objects)
-            if (dBodyGetPosition(body)[2] < h.fallLimit)
+            if (body && dBodyGetPosition(body)[2] < h.fallLimit)
                 dBodyDisable(body);  // fell out of the world: stays where it is
     }
 
@@ -349,7 +395,7 @@ namespace ompl_mmphys
 
     ompl_mm::ObjectPose PlanWorld::objectPose(unsigned int object) const
     {
-        const Eigen::Isometry3d frame = bodyFrame(handles_->objects.at(object));
+        const Eigen::Isometry3d frame = bodyFrame(objectBody(object));
         ompl_mm::ObjectPose pose;
         pose.position = frame * (-handles_->centreOffsets[object]);
         pose.yaw = std::atan2(frame.linear()(1, 0), frame.linear()(0, 0));
@@ -358,13 +404,13 @@ namespace ompl_mmphys
 
     double PlanWorld::objectTilt(unsigned int object) const
     {
-        const double up = bodyFrame(handles_->objects.at(object)).linear()(2, 2);
+        const double up = bodyFrame(objectBody(object)).linear()(2, 2);
         return std::acos(std::clamp(up, -1.0, 1.0));
     }
 
     double PlanWorld::objectSpeed(unsigned int object) const
     {
-        const dReal *v = dBodyGetLinearVel(handles_->objects.at(object));
+        const dReal *v = dBodyGetLinearVel(objectBody(object));
         return Eigen::Vector3d(v[0], v[1], v[2]).norm();
     }
 
