@@ -30,9 +30,21 @@ namespace
     struct Options
     {
         apps::CommonOptions common{"mopl"};
-        std::string path;      ///< path file, empty for none
-        bool simulate{false};  ///< check the plan in physics
+        std::string path;       ///< path file, empty for none
+        bool simulate{false};   ///< check the plan in physics
+        std::string pushModel;  ///< the model every push primitive takes, empty: the scene's
     };
+
+    /** Gives every push primitive of scene the model `model` (kinematic or physics).
+        @throws ompl_core::InputError for another model. */
+    void setPushModel(ompl_mm::Scene &scene, const std::string &model)
+    {
+        if (model != "kinematic" && model != "physics")
+            throw ompl_core::InputError("--push-model must be kinematic or physics, got '" + model + "'");
+        for (ompl_mm::PrimitiveSpec &spec : scene.primitives)
+            if (spec.type.rfind("push_", 0) == 0)
+                spec.params["model"] = model;
+    }
 
     bool parseOptions(int argc, char **argv, Options &options, int &exitCode)
     {
@@ -41,7 +53,10 @@ namespace
             "simulate", po::bool_switch(&options.simulate),
             "execute the plan in physics (ODE): report whether the objects end where planned (JSON: "
             "physics_check; --path: the simulated poses as columns sim.OBJECT.x ...; --html: the "
-            "simulated objects, translucent, beside the planned ones)");
+            "simulated objects, translucent, beside the planned ones)")(
+            "push-model", po::value(&options.pushModel),
+            "give every push primitive of the scene this model: kinematic, or physics (each push "
+            "simulated in ODE while planning)");
         if (!apps::parseCommandLine(
                 argc, argv,
                 "Usage: ompl_mm_plan SCENE.xml [options]\n"
@@ -109,7 +124,9 @@ namespace
     int run(const Options &options)
     {
         ompl_core::PhaseTimes loading;
-        const ompl_mm::Scene scene = ompl_mm::loadScene(options.common.scene);
+        ompl_mm::Scene scene = ompl_mm::loadScene(options.common.scene);
+        if (!options.pushModel.empty())
+            setPushModel(scene, options.pushModel);
         const auto request = options.common.request<ompl_mm::PlanningRequest>();
         ompl_mm::PlanningRun &run = apps::keepUntilExit(std::make_unique<ompl_mm::PlanningRun>(
             scene, request, loading.lap(), ompl_mmphys::physicsPrimitiveFactory()));

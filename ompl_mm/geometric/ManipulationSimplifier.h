@@ -65,6 +65,11 @@ namespace ompl_mm
                          const ompl::base::PlannerTerminationCondition &ptc =
                              ompl::base::plannerNonTerminatingCondition()) const;
 
+        /** Whether some push's outcome is simulated (Primitive::endsWhereAsked() false): where such
+            a push leaves its object is physics' answer, which a shorter push would change, so the
+            simplifier then neither shortens pushes nor removes round trips. False by default. */
+        void setPushesSimulated(bool simulated) { pushesSimulated_ = simulated; }
+
         /** Seconds the simplifier's own inverse kinematics took (ToolPathStraightener; the
             windows' primitives time theirs). */
         double inverseKinematicsTime() const { return straightener_.ikTime(); }
@@ -111,5 +116,6 @@ namespace ompl_mm
         mutable EmptySpacePlanner planner_;
         TransitConnector connector_;
         mutable ToolPathStraightener straightener_;
+        bool pushesSimulated_{false};  ///< see setPushesSimulated()
     };
 }  // namespace ompl_mm

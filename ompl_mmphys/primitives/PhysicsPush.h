@@ -30,7 +30,7 @@ namespace ompl_mmphys
         {
             SimulationSettings simulation;      ///< as the whole plan's check simulates
             double precision{0.005};            ///< metres: pushing stops this near the target
-            double maxPushDistance{0.3};        ///< metres: longest single push before re-aiming
+            double maxPushDistance{10.0};       ///< metres: longest single push before re-aiming
             unsigned int corrections{3};        ///< pushes beyond those maxPushDistance needs
             double sampleSpacing{0.1};          ///< metres of tool travel between recorded waypoints
             double retreat{0.02};               ///< metres the tool backs away, when the push does not

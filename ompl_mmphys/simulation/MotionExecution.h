@@ -20,7 +20,7 @@ namespace ompl_mmphys
         double timeStep{0.004};               ///< ODE step, seconds
         double jointSpeed{0.5};               ///< m/s or rad/s
         double jointAcceleration{1.0};        ///< m/s² or rad/s²
-        double manipulationSpeedFactor{0.5};  ///< share of the speed for segments that move an object
+        double manipulationSpeedFactor{1.0};  ///< share of the speed for segments that move an object
         double settleTime{0.5};  ///< simulated after a push, after a place and at the end, robot still, s
         WorldSettings world;     ///< gravity, friction of the robot and obstacles, ODE
     };

@@ -167,8 +167,23 @@ else
         "exit $status" "$report" "$(outputs)"
 fi
 
+# --- 2c. physics-aware pushes (--push-model physics) ------------------------------------------------
+aware_json=$scratch/aware.json
+run aware "$scene" --seed 1 --push-model physics --simulate --json "$aware_json"
+if [ $status -eq 0 ] && report=$(python3 - "$aware_json" 2>&1 <<'PY'
+import json, sys
+record = json.load(open(sys.argv[1]))
+assert record["primitives"]["push"] > 0, "the plan pushes"
+assert record["physics_check"]["confirmed"], record["physics_check"]
+PY
+); then
+    ok "--push-model physics: the plan's pushes hold in the physics check"
+else
+    not_ok "--push-model physics: the plan's pushes hold in the physics check" "exit $status" "$report" "$(outputs)"
+fi
+
 # --- 3. help and usage -----------------------------------------------------------------------------
-check_help_and_usage --planner --seed --time-limit --param --json --svg --path --simulate mopl
+check_help_and_usage --planner --seed --time-limit --param --json --svg --path --simulate --push-model mopl
 
 # --- 4. not solved -----------------------------------------------------------------------------------
 walled=$(make_scene walled_goal)
@@ -247,6 +262,7 @@ expect_bad_option "--param probabilities that contradict each other" \
     "command line option --param: MOPL: undefined_probability + start_value_probability exceeds 1" \
     "$scene" --param undefined_probability=0.8
 
+expect_bad_option "--push-model unknown" "--push-model must be kinematic or physics" "$scene" --push-model exact
 expect_bad_option "--seed 0" "--seed" "$scene" --seed 0
 expect_bad_option "--seed -1" "--seed" "$scene" --seed -1
 expect_bad_option "--seed 2^32" "--seed" "$scene" --seed 4294967296

@@ -104,9 +104,12 @@ namespace ompl_mm
         const ompl::base::PlannerTerminationCondition &stop = inner.condition();
         const ManipulationMotionValidator::TerminationScope bounded(*validator_, stop);
         path.removeRepeatedStates();
-        while (!ptc && removeRoundTrip(path, goal, rng, stop))
-            ++outcome.roundTripsRemoved;
-        outcome.pushesShortened = shortenPushes(path, goal, rng, stop);
+        if (!pushesSimulated_)
+        {
+            while (!ptc && removeRoundTrip(path, goal, rng, stop))
+                ++outcome.roundTripsRemoved;
+            outcome.pushesShortened = shortenPushes(path, goal, rng, stop);
+        }
         // windows from one primitive run's start to a later run's end: what OMPL's shortcuts cannot
         // do, since they keep every manipulation, is to chain primitives anew across runs
         for (unsigned int attempt = 0; attempt < windowAttempts && !ptc; ++attempt)

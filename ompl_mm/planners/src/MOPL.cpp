@@ -186,6 +186,7 @@ namespace ompl_mm
         simulatedPrimitives_ = std::any_of(primitives_.begin(), primitives_.end(),
                                            [](const PrimitivePtr &p) { return !p->endsWhereAsked(); });
         simplifier_ = std::make_unique<ManipulationSimplifier>(si_);  // throws without the validator
+        simplifier_->setPushesSimulated(simulatedPrimitives_);
         // the space information's own validator, so that the sweeps the walks found free are
         // remembered for the path's re-check
         motions_ = std::dynamic_pointer_cast<ManipulationMotionValidator>(si_->getMotionValidator());

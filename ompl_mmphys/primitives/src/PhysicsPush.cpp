@@ -92,7 +92,7 @@ namespace ompl_mmphys
         const Eigen::Vector2d target = space_->objectPosition(to, k).head<2>();
         const double distance = (target - space_->objectPosition(trajectory.back(), k).head<2>()).norm();
         const unsigned int pushes =
-            static_cast<unsigned int>(std::ceil(distance / settings_.maxPushDistance)) + settings_.corrections + 4;
+            static_cast<unsigned int>(std::ceil(distance / settings_.maxPushDistance)) + settings_.corrections;
         ompl::base::State *aim = space_->cloneState(to);
         double shortfall = 0.0;
         bool pushed = false;
@@ -102,9 +102,7 @@ namespace ompl_mmphys
             const Eigen::Vector2d way = target - from;
             if (way.norm() <= settings_.precision)
                 break;
-            // the last pushes shorter: drift grows with a push's length
-            const double length = std::min(settings_.maxPushDistance, std::max(0.5 * way.norm(), 0.05));
-            const Eigen::Vector2d goal = from + std::min(way.norm(), length) * way.normalized();
+            const Eigen::Vector2d goal = from + std::min(way.norm(), settings_.maxPushDistance) * way.normalized();
             ompl_mm::ObjectPose aimed = space_->objectPose(to, k);
             aimed.position.head<2>() = goal + shortfall * way.normalized();
             space_->setObjectPose(aim, k, aimed);
