@@ -2,7 +2,7 @@
 #pragma once
 
 #include "ompl_mm/primitives/Primitive.h"
-#include "ompl_mmphys/simulation/MotionExecution.h"
+#include "ompl_mmphys/simulation/PhysicsCheck.h"
 
 #include <functional>
 #include <vector>
@@ -28,13 +28,14 @@ namespace ompl_mmphys
         /** How pushes are simulated and corrected. */
         struct Settings
         {
-            SimulationSettings simulation;      ///< as the whole plan's check simulates
-            double precision{0.005};            ///< metres: pushing stops this near the target
-            double maxPushDistance{10.0};       ///< metres: longest single push before re-aiming
-            unsigned int corrections{3};        ///< pushes beyond those maxPushDistance needs
-            double sampleSpacing{0.1};          ///< metres of tool travel between recorded waypoints
-            double retreat{0.02};               ///< metres the tool backs away, when the push does not
-            double tilt{0.3490658503988659};    ///< radians from upright (20°) at the end: fails beyond
+            SimulationSettings simulation;  ///< as the whole plan's check simulates
+            double precision{0.005};        ///< metres: pushing stops this near the target
+            double maxPushDistance{10.0};   ///< metres: longest single push before re-aiming
+            unsigned int corrections{3};    ///< pushes beyond those maxPushDistance needs
+            double sampleSpacing{0.1};      ///< metres of tool travel between recorded waypoints
+            double retreat{0.02};           ///< metres the tool backs away, when the push does not
+            /** radians from upright at the end beyond which a push fails: the check's tolerance */
+            double tilt{CheckTolerances{}.tilt};
         };
 
         /** Simulates the pushes of `kinematic`, whose tool point stands `standoff(object)` metres

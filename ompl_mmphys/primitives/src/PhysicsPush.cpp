@@ -92,7 +92,8 @@ namespace ompl_mmphys
         const Eigen::Vector2d target = space_->objectPosition(to, k).head<2>();
         const double distance = (target - space_->objectPosition(trajectory.back(), k).head<2>()).norm();
         const unsigned int pushes =
-            static_cast<unsigned int>(std::ceil(distance / settings_.maxPushDistance)) + settings_.corrections;
+            static_cast<unsigned int>(std::ceil(distance / settings_.maxPushDistance)) +
+            settings_.corrections;
         ompl::base::State *aim = space_->cloneState(to);
         double shortfall = 0.0;
         bool pushed = false;
@@ -102,7 +103,8 @@ namespace ompl_mmphys
             const Eigen::Vector2d way = target - from;
             if (way.norm() <= settings_.precision)
                 break;
-            const Eigen::Vector2d goal = from + std::min(way.norm(), settings_.maxPushDistance) * way.normalized();
+            const Eigen::Vector2d goal =
+                from + std::min(way.norm(), settings_.maxPushDistance) * way.normalized();
             ompl_mm::ObjectPose aimed = space_->objectPose(to, k);
             aimed.position.head<2>() = goal + shortfall * way.normalized();
             space_->setObjectPose(aim, k, aimed);
@@ -118,8 +120,8 @@ namespace ompl_mmphys
     }
 
     PhysicsPush::Outcome PhysicsPush::pushOnce(const ompl::base::State *from, const ompl::base::State *to,
-                               ompl_mm::Trajectory &trajectory,
-                               const ompl::base::PlannerTerminationCondition &ptc) const
+                                               ompl_mm::Trajectory &trajectory,
+                                               const ompl::base::PlannerTerminationCondition &ptc) const
     {
         ompl_mm::Trajectory kinematicMotion(space_);
         kinematicMotion.reset(from);
@@ -150,9 +152,10 @@ namespace ompl_mmphys
         for (std::size_t i = first; i < motion.size() - 1; ++i)
         {
             const double travel = space_->toolTravel(motion.state(i), motion.state(i + 1));
-            const auto pieces = i < last ? std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(
-                                                                        travel / settings_.sampleSpacing)))
-                                         : 1;
+            const auto pieces =
+                i < last ? std::max<std::size_t>(
+                               1, static_cast<std::size_t>(std::ceil(travel / settings_.sampleSpacing)))
+                         : 1;
             for (std::size_t k = 1; k <= pieces; ++k)
             {
                 ompl::base::State *state = space_->allocState();
@@ -179,8 +182,8 @@ namespace ompl_mmphys
         std::vector<bool> present(space_->objectCount(), false);
         present[object] = true;
         const ompl::time::point started = ompl::time::now();
-        PlanWorld world(space_->model(), robot.front(), objectPoses(*space_, from), settings_.simulation.world,
-                        present);
+        PlanWorld world(space_->model(), robot.front(), objectPoses(*space_, from),
+                        settings_.simulation.world, present);
         MotionExecution execution(world, settings_.simulation);
         PushObserver observer(world, object, waypoints.size());
         execution.execute(robot, labels, observer);
@@ -232,7 +235,8 @@ namespace ompl_mmphys
             std::size_t valid = 0;
             for (; valid < samples; ++valid)
             {
-                space_->interpolate(a, b, static_cast<double>(valid + 1) / static_cast<double>(samples), state);
+                space_->interpolate(a, b, static_cast<double>(valid + 1) / static_cast<double>(samples),
+                                    state);
                 if (!acceptable(state))
                     break;
             }
@@ -283,7 +287,8 @@ namespace ompl_mmphys
         return std::nullopt;
     }
 
-    bool PhysicsPush::liesOn(const Made &made, const std::vector<double> &from, const std::vector<double> &to) const
+    bool PhysicsPush::liesOn(const Made &made, const std::vector<double> &from,
+                             const std::vector<double> &to) const
     {
         if (made.from == from && made.to == to)
             return true;
