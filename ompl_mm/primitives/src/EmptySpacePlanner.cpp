@@ -32,7 +32,6 @@ namespace ompl_mm
         // what is left to reach: `to`, but with the objects that simulated primitives moved
         // where they left them
         ompl::base::State *target = space_->cloneState(to);
-        ompl::base::State *before = space_->allocState();
         unsigned int steps = 0;
         bool useful = true;
         bool done = false;
@@ -49,7 +48,7 @@ namespace ompl_mm
                     break;  // out of time: what was found so far
                 useful = true;
                 ++steps;
-                space_->copyState(before, trajectory.back());
+                const std::size_t start = trajectory.size() - 1;  // where the primitive begins
                 const bool found = primitive.propagate(trajectory.back(), target, trajectory, ptc);
                 tally_.attempt(primitive.kind(), found, found ? "" : primitive.takeRejection());
                 if (found)
@@ -57,7 +56,7 @@ namespace ompl_mm
                 else
                     failed_[index] = 1;
                 if (found && !primitive.endsWhereAsked())
-                    adoptMovedObjects(before, trajectory.back(), target);
+                    adoptMovedObjects(trajectory.state(start), trajectory.back(), target);
                 // `to` itself, or as near as the simulated primitives came
                 done = space_->equalStates(trajectory.back(), target);
                 if (done)
@@ -65,7 +64,6 @@ namespace ompl_mm
             }
         }
         const bool reached = done && space_->equalStates(trajectory.back(), to);
-        space_->freeState(before);
         space_->freeState(target);
         if (reached)
             return Outcome::Reached;
