@@ -30,7 +30,8 @@ namespace ompl_mm
         3. runs the steps of OMPL's PathSimplifier (shortcuts, B-spline smoothing, vertex
            reduction), seeded from the caller's RNG, on a copy kept when all of it is valid and
            shorter; with the motion validator they shorten push runs as well as transit runs but
-           never make an object move on its own;
+           never make an object move on its own (with simulated pushes, each stretch between push
+           runs on its own);
         4. brings an arm's tool closer to straight lines along its transits and transfers
            (ToolPathStraightener), or, where the tool moves straight already, runs step 3 again.
         Every change is checked with the ManipulationMotionValidator, so the result is as valid as
@@ -102,6 +103,11 @@ namespace ompl_mm
             comment); leaves it as it is when ptc becomes true before the round's copy is checked. */
         void shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng,
                              const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** Step 3 on the whole path; with simulated pushes, which OMPL's steps cannot change, on
+            each stretch between push runs alone: OMPL's vertex collapsing takes time cubic in the
+            states, and a simulated push leaves a waypoint every few centimetres. */
+        void shortenStretches(ManipulationPath &path, ompl::RNG &rng,
+                              const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Replans states first … last with the empty-space planner (until ptc is true); true when
             the path changed. */
         bool replanWindow(ManipulationPath &path, std::size_t first, std::size_t last, ompl::RNG &rng,

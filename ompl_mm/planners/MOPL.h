@@ -3,6 +3,7 @@
 #include "ompl_mm/base/ManipulationGoal.h"
 #include "ompl_mm/geometric/ManipulationPath.h"
 #include "ompl_mm/geometric/ManipulationSimplifier.h"
+#include "ompl_mm/geometric/TransitConnector.h"
 #include "ompl_mm/planners/ManipulationTree.h"
 #include "ompl_mm/planners/ModalSampler.h"
 #include "ompl_mm/primitives/EmptySpacePlanner.h"
@@ -189,6 +190,9 @@ namespace ompl_mm
             bool reached{false};     ///< the tree now contains the target state
             int blockingObject{-1};  ///< the object that stopped the walk (SweepCheck::blockingObject)
         };
+        /** Iterations of the robot's transit planning to the goal from a layout of the objects
+            that meets it (transitToGoal). */
+        static constexpr unsigned int GOAL_TRANSIT_ITERATIONS = 2000;
         /** Random places tried for an object pushed aside before giving up (off its surface). */
         static constexpr unsigned int CLEAR_PLACE_ATTEMPTS = 20;
 
@@ -200,12 +204,12 @@ namespace ompl_mm
             walked with continuous checks. Both stop where they are once ptc is true. */
         Extension extend(ManipulationTree &tree, int near, const ompl::base::State *target,
                          const ompl::base::PlannerTerminationCondition &ptc);
-        /** Walks the trajectory away from vertex near, adding vertices, until it ends, a motion
-            collides or ptc is true (then not reached). */
         /** The primitive kind a walk's contact on segment of trajectory counts against: the
             segment's own, or for a transit, that of the next segment that is no transit (it
             approaches it), or transit when none follows. */
         static PrimitiveKind blamedKind(const Trajectory &trajectory, std::size_t segment);
+        /** Walks the trajectory away from vertex near, adding vertices, until it ends, a motion
+            collides or ptc is true (then not reached). */
         Extension walk(ManipulationTree &tree, int near, const Trajectory &trajectory,
                        const ompl::base::PlannerTerminationCondition &ptc);
         /** True when the sample defines every object and state has each where the sample does. */
@@ -214,6 +218,13 @@ namespace ompl_mm
             clear radius (target: scratch space); an empty extension when no place fits. */
         Extension clearWay(ManipulationTree &tree, int from, unsigned int object, ompl::base::State *target,
                            const ompl::base::PlannerTerminationCondition &ptc);
+        /** With simulated primitives: when start-tree vertex `vertex` holds every object where the
+            goal wants it and only the robot is elsewhere, plans the robot's transit to the goal
+            (TransitConnector, GOAL_TRANSIT_ITERATIONS) and walks it. The goal tree cannot do this
+            itself, since its roots would need the objects exactly where physics left them. Each
+            layout of the objects is tried once: every vertex with the same layout lies in the same
+            free space of the robot. Returns the vertex where the walk ends in the goal, or -1. */
+        int transitToGoal(int vertex, const ompl::base::PlannerTerminationCondition &ptc);
         /** Objects the goal leaves free (clear_min_free_objects compares with it). */
         unsigned int freeObjectCount() const;
         /** After an extension from near that an object stopped: clears the object out of the way and
@@ -245,6 +256,9 @@ namespace ompl_mm
         /** checks the walks' motions continuously: the space information's validator */
         std::shared_ptr<ManipulationMotionValidator> motions_;
         std::unique_ptr<ManipulationSimplifier> simplifier_;
+        std::unique_ptr<TransitConnector> goalTransit_;  ///< plans transitToGoal()'s motions
+        /** the layouts of the objects (x, y, z, yaw of each) transitToGoal() has tried */
+        std::vector<std::vector<double>> goalLayoutsTried_;
         std::unique_ptr<ModalSampler> sampler_;
         ModalSampler::Probabilities probabilities_;
         std::unique_ptr<ManipulationTree> startTree_;

@@ -124,13 +124,13 @@ namespace ompl_mm
                 ++outcome.windowsReplanned;
         }
         if (!ptc)
-            shortenWithOMPL(path, rng, stop);
+            shortenStretches(path, rng, stop);
         // a second round of OMPL's steps only where the tool moves straight already (mobile
         // bases: 100 seeds of MOBILE BLOCKED 15.71 -> 15.29 m): on an arm its B-spline leaves many
         // short joint-space arcs that the straightener no longer takes on (KUKA TABLE, 100 seeds:
         // 7.89 m with it before the straightener, 7.61 m without)
         if (!ptc && straightener_.straighten(path, ptc) == 0 && !ptc)
-            shortenWithOMPL(path, rng, stop);
+            shortenStretches(path, rng, stop);
         path.removeRepeatedStates();
         return outcome;
     }
@@ -312,6 +312,44 @@ namespace ompl_mm
             return false;
         path.replace(first, last, replanned);
         return true;
+    }
+
+    void ManipulationSimplifier::shortenStretches(ManipulationPath &path, ompl::RNG &rng,
+                                                  const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        if (!pushesSimulated_)
+        {
+            shortenWithOMPL(path, rng, ptc);
+            return;
+        }
+        // the stretches between push runs, the last first: a change moves only the states after it
+        std::size_t end = path.getStateCount() - 1;
+        while (end > 0 && !ptc)
+        {
+            std::size_t first = end;
+            while (first > 0 && path.label(first - 1).kind != PrimitiveKind::Push)
+                --first;
+            if (end - first >= 2)
+            {
+                ManipulationPath stretch(si_);
+                stretch.appendFirst(path.getState(first));
+                for (std::size_t k = first; k < end; ++k)
+                    stretch.appendLabelled(path.getState(k + 1), path.label(k));
+                const double before = stretch.toolPathLength();
+                shortenWithOMPL(stretch, rng, ptc);
+                if (stretch.toolPathLength() < before)
+                {
+                    Trajectory shorter(space_);
+                    shorter.reset(stretch.getState(0));
+                    for (std::size_t k = 1; k < stretch.getStateCount(); ++k)
+                        shorter.append(stretch.getState(k), stretch.label(k - 1));
+                    path.replace(first, end, shorter);
+                }
+            }
+            end = first;
+            while (end > 0 && path.label(end - 1).kind == PrimitiveKind::Push)
+                --end;
+        }
     }
 
     void ManipulationSimplifier::shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng,

@@ -10,6 +10,7 @@
 #include <ompl/util/String.h>
 #include <ompl/util/Time.h>
 
+#include <algorithm>
 #include <boost/math/constants/constants.hpp>
 #include <chrono>
 #include <cmath>
@@ -45,6 +46,19 @@ namespace ompl_mm
         {
             return ompl_core::formatNumber(low) + ":" + ompl_core::formatNumber(low) + ":" +
                    ompl_core::formatNumber(high);
+        }
+
+        /** The objects' poses in state: x, y, z, yaw of each. */
+        std::vector<double> objectLayout(const ManipulationStateSpace &space, const ob::State *state)
+        {
+            std::vector<double> layout;
+            for (unsigned int i = 0; i < space.objectCount(); ++i)
+            {
+                const ObjectPose pose = space.objectPose(state, i);
+                layout.insert(layout.end(),
+                              {pose.position.x(), pose.position.y(), pose.position.z(), pose.yaw});
+            }
+            return layout;
         }
 
         /** @throws ompl::Exception naming the parameter, its range and the value when value is outside
@@ -187,6 +201,7 @@ namespace ompl_mm
                                            [](const PrimitivePtr &p) { return !p->endsWhereAsked(); });
         simplifier_ = std::make_unique<ManipulationSimplifier>(si_);  // throws without the validator
         simplifier_->setPushesSimulated(simulatedPrimitives_);
+        goalTransit_ = std::make_unique<TransitConnector>(si_);
         // the space information's own validator, so that the sweeps the walks found free are
         // remembered for the path's re-check
         motions_ = std::dynamic_pointer_cast<ManipulationMotionValidator>(si_->getMotionValidator());
@@ -239,6 +254,7 @@ namespace ompl_mm
         if (goalTree_)
             goalTree_->clear();
         sampler_.reset();
+        goalLayoutsTried_.clear();
         statistics_ = MOPLStatistics();
         if (esp_)
             esp_->tally().clear();
@@ -252,6 +268,7 @@ namespace ompl_mm
         goalTree_->clear();
         startTree_->add(start, -1, {});
         space_->freeState(start);
+        goalLayoutsTried_.clear();
         ++statistics_.restarts;
     }
 
@@ -459,6 +476,41 @@ namespace ompl_mm
         return retried.last >= 0 && retried.last != cleared.last ? retried : cleared;
     }
 
+    int MOPL::transitToGoal(int vertex, const ob::PlannerTerminationCondition &ptc)
+    {
+        const ob::State *from = startTree_->vertex(vertex).state;
+        if (startTree_->vertex(vertex).group == ManipulationTree::NO_GROUP)
+            return -1;
+        PartialState here(space_);
+        space_->copyState(here.state(), from);
+        here.defineAll();
+        ob::State *goal = space_->allocState();
+        goal_->complete(here, goal, rng_, true);
+        int reached = -1;
+        std::vector<double> layout = objectLayout(*space_, from);
+        if (!space_->anyObjectMoves(from, goal) && si_->isValid(goal) &&
+            std::find(goalLayoutsTried_.begin(), goalLayoutsTried_.end(), layout) == goalLayoutsTried_.end())
+        {
+            goalLayoutsTried_.push_back(std::move(layout));
+            Trajectory transit(space_);
+            transit.reset(from);
+            bool planned = false;
+            {
+                ScopedTimer timer(statistics_.propagateTime);
+                planned = goalTransit_->connect(transit, goal, GOAL_TRANSIT_ITERATIONS, rng_, ptc);
+            }
+            if (planned)
+            {
+                ScopedTimer timer(statistics_.connectTime);
+                const Extension walked = walk(*startTree_, vertex, transit, ptc);
+                if (walked.reached && goal_->isSatisfied(startTree_->vertex(walked.last).state))
+                    reached = walked.last;
+            }
+        }
+        space_->freeState(goal);
+        return reached;
+    }
+
     unsigned int MOPL::freeObjectCount() const
     {
         unsigned int free = 0;
@@ -571,6 +623,16 @@ namespace ompl_mm
                 addSolution(grown.last, -1, ptc);
                 countQueries();
                 return ob::PlannerStatus::EXACT_SOLUTION;
+            }
+            if (a.forward() && simulatedPrimitives_)
+            {
+                const int reached = transitToGoal(grown.last, inner);
+                if (reached >= 0)
+                {
+                    addSolution(reached, -1, ptc);
+                    countQueries();
+                    return ob::PlannerStatus::EXACT_SOLUTION;
+                }
             }
 
             // try to connect the other tree to the new vertex, unless no motion may start there
