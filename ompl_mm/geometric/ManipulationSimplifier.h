@@ -66,10 +66,12 @@ namespace ompl_mm
                          const ompl::base::PlannerTerminationCondition &ptc =
                              ompl::base::plannerNonTerminatingCondition()) const;
 
-        /** Whether some push's outcome is simulated (Primitive::endsWhereAsked() false): where such
-            a push leaves its object is physics' answer, which a shorter push would change, so the
-            simplifier then neither shortens pushes nor removes round trips. False by default. */
-        void setPushesSimulated(bool simulated) { pushesSimulated_ = simulated; }
+        /** Whether some push's outcome is simulated (a primitive of the motion validator whose
+            Primitive::endsWhereAsked() is false): where such a push leaves its object is physics'
+            answer, which a shorter push would change, so the simplifier then neither shortens
+            pushes nor removes round trips, and OMPL's steps run on the stretches between push runs
+            only. */
+        bool pushesSimulated() const { return pushesSimulated_; }
 
         /** Seconds the simplifier's own inverse kinematics took (ToolPathStraightener; the
             windows' primitives time theirs). */
@@ -122,6 +124,6 @@ namespace ompl_mm
         mutable EmptySpacePlanner planner_;
         TransitConnector connector_;
         mutable ToolPathStraightener straightener_;
-        bool pushesSimulated_{false};  ///< see setPushesSimulated()
+        bool pushesSimulated_;  ///< see pushesSimulated()
     };
 }  // namespace ompl_mm

@@ -21,8 +21,11 @@ namespace ompl_mmphys
         double jointSpeed{0.5};               ///< m/s or rad/s
         double jointAcceleration{1.0};        ///< m/s² or rad/s²
         double manipulationSpeedFactor{1.0};  ///< share of the speed for segments that move an object
-        double settleTime{0.5};  ///< simulated after a push, after a place and at the end, robot still, s
-        WorldSettings world;     ///< gravity, friction of the robot and obstacles, ODE
+        /** simulated after a push, after a place and at the end, robot still, s: at most, since
+            settling ends once the free objects have been at rest (below 1 mm/s and 0.01 rad/s)
+            for 10 steps */
+        double settleTime{0.5};
+        WorldSettings world;  ///< gravity, friction of the robot and obstacles, ODE
     };
 
     /** Checks that settings' times, speeds and accelerations are positive (the settling time 0 or
@@ -76,7 +79,8 @@ namespace ompl_mmphys
             @pre labels.size() + 1 == waypoints.size(). */
         void execute(const std::vector<const double *> &waypoints,
                      const std::vector<ompl_mm::SegmentLabel> &labels, ExecutionObserver &observer);
-        /** Lets the world run for the settling time with the robot still at joint values q. */
+        /** Lets the world run with the robot still at joint values q for the settling time, or
+            until the free objects have been at rest for 10 steps in a row, whichever comes first. */
         void settle(const double *q, ExecutionObserver &observer);
 
     private:

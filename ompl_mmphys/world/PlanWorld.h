@@ -91,6 +91,9 @@ namespace ompl_mmphys
         double objectTilt(unsigned int object) const;
         /** The object's linear speed, m/s. */
         double objectSpeed(unsigned int object) const;
+        /** True when every free object (neither held nor held still by isolate()) moves slower
+            than speed (m/s) and turns slower than spin (rad/s). */
+        bool atRest(double speed, double spin) const;
         /** The sum of the forces the robot's links exerted on the objects in the last step, N (world
             frame; objects held excluded). */
         Eigen::Vector3d robotContactForce() const;

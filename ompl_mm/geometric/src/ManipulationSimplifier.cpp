@@ -89,6 +89,9 @@ namespace ompl_mm
             throw ompl::Exception(
                 "ManipulationSimplifier needs a ManipulationMotionValidator on the space "
                 "information (ManipulationSetup installs one)");
+        const std::vector<PrimitivePtr> &primitives = validator_->primitives();
+        pushesSimulated_ = std::any_of(primitives.begin(), primitives.end(),
+                                       [](const PrimitivePtr &p) { return !p->endsWhereAsked(); });
     }
 
     ManipulationSimplifier::Outcome ManipulationSimplifier::simplify(

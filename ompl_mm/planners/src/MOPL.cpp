@@ -200,7 +200,6 @@ namespace ompl_mm
         simulatedPrimitives_ = std::any_of(primitives_.begin(), primitives_.end(),
                                            [](const PrimitivePtr &p) { return !p->endsWhereAsked(); });
         simplifier_ = std::make_unique<ManipulationSimplifier>(si_);  // throws without the validator
-        simplifier_->setPushesSimulated(simulatedPrimitives_);
         goalTransit_ = std::make_unique<TransitConnector>(si_);
         // the space information's own validator, so that the sweeps the walks found free are
         // remembered for the path's re-check

@@ -15,6 +15,14 @@ namespace ompl_mmphys
             of one straight motion differ only by rounding. */
         constexpr double SAME_DIRECTION = 1e-9;
 
+        /** Settling ends early once every free object has moved slower than REST_SPEED (m/s) and
+            turned slower than REST_SPIN (rad/s) for REST_STEPS steps in a row: friction stops a
+            pushed or placed object within a few steps, and the rest of settleTime would change
+            nothing but the time spent. */
+        constexpr double REST_SPEED = 1e-3;
+        constexpr double REST_SPIN = 1e-2;
+        constexpr std::size_t REST_STEPS = 10;
+
         bool holds(const ompl_mm::SegmentLabel &label)
         {
             return label.kind == ompl_mm::PrimitiveKind::Pickup ||
@@ -173,13 +181,15 @@ namespace ompl_mmphys
     {
         const auto steps = static_cast<std::size_t>(std::ceil(settings_.settleTime / settings_.timeStep));
         ompl_phys::RobotMove move;
-        for (std::size_t k = 0; k < steps; ++k)
+        std::size_t k = 0;
+        for (std::size_t resting = 0; k < steps && resting < REST_STEPS; ++k)
         {
             world_.driveRobot(q, q, settings_.timeStep);
             world_.step(settings_.timeStep);
             move.force += world_.robotContactForce();
             observer.stepped(q);
+            resting = world_.atRest(REST_SPEED, REST_SPIN) ? resting + 1 : 0;
         }
-        report(move, steps, observer);
+        report(move, k, observer);
     }
 }  // namespace ompl_mmphys

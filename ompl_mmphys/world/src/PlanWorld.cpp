@@ -414,6 +414,23 @@ namespace ompl_mmphys
         return Eigen::Vector3d(v[0], v[1], v[2]).norm();
     }
 
+    bool PlanWorld::atRest(double speed, double spin) const
+    {
+        const Handles &h = *handles_;
+        for (std::size_t i = 0; i < h.objects.size(); ++i)
+        {
+            dBodyID body = h.objects[i];
+            if (!body || h.held[i] || !dBodyIsEnabled(body))
+                continue;
+            const dReal *v = dBodyGetLinearVel(body);
+            const dReal *w = dBodyGetAngularVel(body);
+            if (Eigen::Vector3d(v[0], v[1], v[2]).norm() >= speed ||
+                Eigen::Vector3d(w[0], w[1], w[2]).norm() >= spin)
+                return false;
+        }
+        return true;
+    }
+
     Eigen::Vector3d PlanWorld::robotContactForce() const
     {
         Eigen::Vector3d sum = Eigen::Vector3d::Zero();
