@@ -16,12 +16,13 @@ namespace ompl_mmphys
         line says. After each push the tool backs away (the kinematic push's own retreat, or
         `retreat` metres back along the push) and the world settles; while the object is farther
         than `precision` from its target, the push is corrected from where the object lies, at
-        most `corrections` times. A push that tips the object over or pushes it off its surface
-        fails. The waypoints along a push are recorded every `sampleSpacing` metres of tool travel,
-        the object kept at least the kinematic standoff from the tool point (it touches the robot in
-        the simulation, which the collision checks would not allow), so that collision checks see
-        its real track. Its motions do not end where asked (endsWhereAsked() is false); explain()
-        accepts the segments it made (and pieces of them) and no other. Not thread-safe. */
+        most `corrections` times. A push ends before the object slides around the pusher farther
+        than `slip` from the tool's heading (simulated again, ending at the waypoint before). A push
+        that tips the object over or pushes it off its surface fails. The waypoints along a push are recorded
+       every `sampleSpacing` metres of tool travel, the object kept at least the kinematic standoff from the
+       tool point (it touches the robot in the simulation, which the collision checks would not allow), so
+       that collision checks see its real track. Its motions do not end where asked (endsWhereAsked() is
+       false); explain() accepts the segments it made (and pieces of them) and no other. Not thread-safe. */
     class PhysicsPush : public ompl_mm::Primitive
     {
     public:
@@ -36,6 +37,10 @@ namespace ompl_mmphys
             double retreat{0.02};           ///< metres the tool backs away, when the push does not
             /** radians from upright at the end beyond which a push fails: the check's tolerance */
             double tilt{CheckTolerances{}.tilt};
+            /** radians: how far the object may slide around the pusher, from the tool's heading
+                (seen from the tool point, in the plane); the push ends before it slides farther,
+                where what physics makes of it would no longer be repeatable */
+            double slip{M_PI / 4.0};
         };
 
         /** Simulates the pushes of `kinematic`, whose tool point stands `standoff(object)` metres
@@ -82,6 +87,7 @@ namespace ompl_mmphys
         enum class Outcome
         {
             Pushed,      ///< the push, simulated, is appended
+            Cut,         ///< the push, ended early where the object began to slide off, is appended
             Approached,  ///< only the valid part of the way to the push start is appended
             Failed       ///< nothing is appended
         };
@@ -90,6 +96,23 @@ namespace ompl_mmphys
         Outcome pushOnce(const ompl::base::State *from, const ompl::base::State *to,
                          ompl_mm::Trajectory &trajectory,
                          const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** Where a simulated push left its object. */
+        struct SimulatedPush
+        {
+            std::vector<ompl_mm::ObjectPose> poses;  ///< per waypoint
+            double tilt{0.0};                        ///< radians from upright at the end
+        };
+        /** Simulates the robot along waypoints (a push from its start, labelled push) with the
+            objects where `from` has them, only the pushed one in the world. */
+        SimulatedPush simulate(const std::vector<ompl::base::State *> &waypoints,
+                               const ompl::base::State *from, ompl_mm::SegmentLabel push) const;
+        /** The first of waypoints 1 … pushEnd at which the object, at poses, lies more than
+            Settings::slip from the tool's heading, or 0. */
+        std::size_t slipWaypoint(const std::vector<ompl::base::State *> &waypoints,
+                                 const std::vector<ompl_mm::ObjectPose> &poses, std::size_t pushEnd) const;
+        /** A new state: end with the tool backed away `retreat` metres towards before (at most to
+            before). */
+        ompl::base::State *retreatFrom(const ompl::base::State *before, const ompl::base::State *end) const;
         /** The part of motion whose states the validity checker accepts (checked every
             CHECK_SPACING metres of tool travel), as the planner's walk would keep it: nothing
             beyond an invalid state is worth simulating. */

@@ -57,6 +57,7 @@ namespace ompl_mmphys
         requirePositiveSetting(settings.sampleSpacing, "sampleSpacing");
         requirePositiveSetting(settings.retreat, "retreat");
         requirePositiveSetting(settings.tilt, "tilt");
+        requirePositiveSetting(settings.slip, "slip");
         checkSettings(settings.simulation, "PhysicsPush");
     }
 
@@ -110,10 +111,11 @@ namespace ompl_mmphys
             space_->setObjectPose(aim, k, aimed);
             const Outcome outcome = pushOnce(trajectory.back(), aim, trajectory, ptc);
             pushed = pushed || outcome != Outcome::Failed;
-            if (outcome != Outcome::Pushed)
+            if (outcome != Outcome::Pushed && outcome != Outcome::Cut)
                 break;
             const Eigen::Vector2d reached = space_->objectPosition(trajectory.back(), k).head<2>();
-            shortfall = std::max(0.0, (aimed.position.head<2>() - reached).dot(way.normalized()));
+            if (outcome == Outcome::Pushed)  // a cut push says nothing of the clearance
+                shortfall = std::max(0.0, (aimed.position.head<2>() - reached).dot(way.normalized()));
         }
         space_->freeState(aim);
         return pushed;
@@ -149,6 +151,7 @@ namespace ompl_mmphys
         // the robot's waypoints from the push's start: pushes split every sampleSpacing of tool
         // travel, then the kinematic push's retreat or one of our own, all labelled as the push
         std::vector<ompl::base::State *> waypoints{space_->cloneState(motion.state(first))};
+        std::size_t pushEnd = 0;  // the waypoint where pushing ends
         for (std::size_t i = first; i < motion.size() - 1; ++i)
         {
             const double travel = space_->toolTravel(motion.state(i), motion.state(i + 1));
@@ -163,37 +166,39 @@ namespace ompl_mmphys
                                     static_cast<double>(k) / static_cast<double>(pieces), state);
                 waypoints.push_back(state);
             }
+            if (i + 1 == last)
+                pushEnd = waypoints.size() - 1;
         }
         if (last + 1 == motion.size())
-        {
-            const ompl::base::State *start = motion.state(last - 1);
-            const ompl::base::State *end = motion.state(last);
-            const double travel = space_->toolTravel(start, end);
-            ompl::base::State *back = space_->cloneState(end);
-            space_->interpolate(end, start, std::min(1.0, settings_.retreat / std::max(travel, 1e-9)), back);
-            waypoints.push_back(back);
-        }
+            waypoints.push_back(retreatFrom(motion.state(last - 1), motion.state(last)));
 
-        // simulate: the robot from the push's start, only the pushed object in the world
-        std::vector<const double *> robot;
-        for (const ompl::base::State *state : waypoints)
-            robot.push_back(space_->robotValues(state));
-        const std::vector<ompl_mm::SegmentLabel> labels(waypoints.size() - 1, push);
-        std::vector<bool> present(space_->objectCount(), false);
-        present[object] = true;
-        const ompl::time::point started = ompl::time::now();
-        PlanWorld world(space_->model(), robot.front(), objectPoses(*space_, from),
-                        settings_.simulation.world, present);
-        MotionExecution execution(world, settings_.simulation);
-        PushObserver observer(world, object, waypoints.size());
-        execution.execute(robot, labels, observer);
-        simulationTime_ += ompl::time::seconds(ompl::time::now() - started);
-        ++simulations_;
+        // simulate; while the object slides around the pusher, end the push before it does
+        SimulatedPush simulated = simulate(waypoints, from, push);
+        bool cut = false;
+        for (std::size_t slip = slipWaypoint(waypoints, simulated.poses, pushEnd); slip > 0;
+             slip = slipWaypoint(waypoints, simulated.poses, pushEnd))
+        {
+            if (slip == 1)
+            {
+                for (ompl::base::State *state : waypoints)
+                    space_->freeState(state);
+                rejectBecause("object '" + space_->model()->scene().objects[object].name +
+                              "' slides off the pusher");
+                return Outcome::Failed;
+            }
+            pushEnd = slip - 1;
+            for (std::size_t i = pushEnd + 1; i < waypoints.size(); ++i)
+                space_->freeState(waypoints[i]);
+            waypoints.resize(pushEnd + 1);
+            waypoints.push_back(retreatFrom(waypoints[pushEnd - 1], waypoints[pushEnd]));
+            simulated = simulate(waypoints, from, push);
+            cut = true;
+        }
 
         const ompl_mm::Scene &scene = space_->model()->scene();
         const std::string &name = scene.objects[object].name;
-        const int surface = surfaceUnder(scene, observer.poses.back().position);
-        const double tilt = world.objectTilt(object);
+        const int surface = surfaceUnder(scene, simulated.poses.back().position);
+        const double tilt = simulated.tilt;
         bool made = false;
         if (tilt > settings_.tilt)
             rejectBecause("the push tips object '" + name + "' over (" + std::to_string(tilt * 180.0 / M_PI) +
@@ -208,7 +213,7 @@ namespace ompl_mmphys
             const double height = scene.surfaces[static_cast<std::size_t>(surface)].height;
             for (std::size_t i = 1; i < waypoints.size(); ++i)
             {
-                ompl_mm::ObjectPose pose = observer.poses[i];
+                ompl_mm::ObjectPose pose = simulated.poses[i];
                 pose.position.z() = height;  // resting, as the planner's states hold objects
                 space_->setObjectPose(waypoints[i], object, pose);
                 keepStandoff(waypoints[i], object);
@@ -218,7 +223,58 @@ namespace ompl_mmphys
         }
         for (ompl::base::State *state : waypoints)
             space_->freeState(state);
-        return made ? Outcome::Pushed : Outcome::Failed;
+        if (!made)
+            return Outcome::Failed;
+        return cut ? Outcome::Cut : Outcome::Pushed;
+    }
+
+    PhysicsPush::SimulatedPush PhysicsPush::simulate(const std::vector<ompl::base::State *> &waypoints,
+                                                     const ompl::base::State *from,
+                                                     ompl_mm::SegmentLabel push) const
+    {
+        // the robot from the push's start, only the pushed object in the world
+        const auto object = static_cast<unsigned int>(push.object);
+        std::vector<const double *> robot;
+        for (const ompl::base::State *state : waypoints)
+            robot.push_back(space_->robotValues(state));
+        const std::vector<ompl_mm::SegmentLabel> labels(waypoints.size() - 1, push);
+        std::vector<bool> present(space_->objectCount(), false);
+        present[object] = true;
+        const ompl::time::point started = ompl::time::now();
+        PlanWorld world(space_->model(), robot.front(), objectPoses(*space_, from),
+                        settings_.simulation.world, present);
+        MotionExecution execution(world, settings_.simulation);
+        PushObserver observer(world, object, waypoints.size());
+        execution.execute(robot, labels, observer);
+        simulationTime_ += ompl::time::seconds(ompl::time::now() - started);
+        ++simulations_;
+        return {std::move(observer.poses), world.objectTilt(object)};
+    }
+
+    std::size_t PhysicsPush::slipWaypoint(const std::vector<ompl::base::State *> &waypoints,
+                                          const std::vector<ompl_mm::ObjectPose> &poses,
+                                          std::size_t pushEnd) const
+    {
+        const double limit = std::cos(settings_.slip);
+        for (std::size_t i = 1; i <= pushEnd; ++i)
+        {
+            const Eigen::Vector2d tool = space_->toolPosition(waypoints[i]).head<2>();
+            const Eigen::Vector2d heading = tool - space_->toolPosition(waypoints[i - 1]).head<2>();
+            const Eigen::Vector2d toObject = poses[i].position.head<2>() - tool;
+            if (heading.norm() > 0.0 && toObject.norm() > 0.0 &&
+                heading.dot(toObject) < limit * heading.norm() * toObject.norm())
+                return i;
+        }
+        return 0;
+    }
+
+    ompl::base::State *PhysicsPush::retreatFrom(const ompl::base::State *before,
+                                                const ompl::base::State *end) const
+    {
+        const double travel = space_->toolTravel(before, end);
+        ompl::base::State *back = space_->cloneState(end);
+        space_->interpolate(end, before, std::min(1.0, settings_.retreat / std::max(travel, 1e-9)), back);
+        return back;
     }
 
     ompl_mm::Trajectory PhysicsPush::reachablePart(const ompl_mm::Trajectory &motion) const

@@ -54,7 +54,7 @@ TEST_F(PhysicsAwarePlanningTest, OnceTheObjectsMeetTheGoalTheRobotsTransitThereI
     setup_.mopl()->setSeed(2);
     ASSERT_TRUE(setup_.solve(10.0));
     EXPECT_TRUE(setup_.haveExactSolutionPath());
-    EXPECT_LT(setup_.mopl()->statistics().iterations, 1000u);
+    EXPECT_LT(setup_.mopl()->statistics().iterations, 5000u);
     const ompl_mmphys::PhysicsCheck check = ompl_mmphys::checkPlan(setup_, setup_.manipulationPath());
     EXPECT_TRUE(check.confirmed) << "largest error " << check.maxPositionError << " m";
 }

@@ -82,14 +82,48 @@ TEST_F(PhysicsPushTest, TheWholePlanSimulationEndsEachPushWhereThePushPutItsObje
         if (trajectory.label(i - 1).kind == PrimitiveKind::Push && trajectory.branchable(i))
         {
             // measured: within 1.1 mm
-            EXPECT_LT((simulated.statePoses[i][OBJ3].position - space_.objectPosition(trajectory.state(i), OBJ3))
-                          .head<2>()
-                          .norm(),
-                      0.003)
+            EXPECT_LT(
+                (simulated.statePoses[i][OBJ3].position - space_.objectPosition(trajectory.state(i), OBJ3))
+                    .head<2>()
+                    .norm(),
+                0.003)
                 << "after the push ending at waypoint " << i;
             ++compared;
         }
     EXPECT_GT(compared, 1u);
+}
+
+TEST_F(PhysicsPushTest, APushEndsBeforeItsObjectSlidesAroundThePusher)
+{
+    // pushed off the diagonal, obj3 slides around the disc's rim; with a tight slip limit each
+    // push ends before the object leaves it, and is corrected from there
+    ObjectPose aside = space_.objectPose(start_, OBJ3);
+    aside.position.head<2>() = Eigen::Vector2d(-0.3, -1.1);
+    space_.setObjectPose(target_, OBJ3, aside);
+    PhysicsPush::Settings settings;
+    settings.slip = 0.1;
+    settings.corrections = 20;
+    const auto tight = std::make_shared<PhysicsPush>(
+        &space_, kinematic_, [](unsigned int) { return STANDOFF; }, settings);
+    tight->setStateValidityChecker(setup_.getStateValidityChecker());
+    Trajectory trajectory(&space_);
+    trajectory.reset(start_);
+    ASSERT_TRUE(tight->propagate(start_, target_, trajectory)) << tight->takeRejection();
+    std::size_t checked = 0;
+    for (std::size_t i = 1; i + 1 < trajectory.size(); ++i)
+        if (trajectory.label(i - 1).kind == PrimitiveKind::Push && !trajectory.branchable(i))
+        {  // pushing, not yet backed away: the object lies within the limit of the tool's heading
+            const Eigen::Vector2d tool = space_.toolPosition(trajectory.state(i)).head<2>();
+            const Eigen::Vector2d heading = tool - space_.toolPosition(trajectory.state(i - 1)).head<2>();
+            const Eigen::Vector2d toObject =
+                space_.objectPosition(trajectory.state(i), OBJ3).head<2>() - tool;
+            EXPECT_LE(std::acos(heading.normalized().dot(toObject.normalized())), settings.slip + 1e-9)
+                << "waypoint " << i;
+            ++checked;
+        }
+    EXPECT_GT(checked, 3u);
+    const Trajectory loose = pushObj3();
+    EXPECT_GT(tight->simulations(), push_->simulations()) << "pushes ended early and were corrected";
 }
 
 TEST_F(PhysicsPushTest, OnlyTheEndOfAPushAfterTheToolBacksAwayIsBranchable)
@@ -110,7 +144,8 @@ TEST_F(PhysicsPushTest, ExplainsItsOwnSegmentsAndTheirPiecesOnly)
     std::size_t push = 0;
     while (trajectory.label(push).kind != PrimitiveKind::Push)
         ++push;
-    const std::optional<SegmentLabel> label = push_->explain(trajectory.state(push), trajectory.state(push + 1));
+    const std::optional<SegmentLabel> label =
+        push_->explain(trajectory.state(push), trajectory.state(push + 1));
     ASSERT_TRUE(label);
     EXPECT_EQ(*label, (SegmentLabel{PrimitiveKind::Push, static_cast<int>(OBJ3)}));
     ompl::base::State *a = newState();
@@ -167,11 +202,18 @@ TEST_F(PhysicsPushTest, BadSettingsAreRefused)
 {
     PhysicsPush::Settings settings;
     settings.precision = 0.0;
-    EXPECT_THROW(PhysicsPush(&space_, kinematic_, [](unsigned int) { return STANDOFF; }, settings),
+    EXPECT_THROW(PhysicsPush(
+                     &space_, kinematic_, [](unsigned int) { return STANDOFF; }, settings),
+                 ompl::Exception);
+    settings = {};
+    settings.slip = 0.0;
+    EXPECT_THROW(PhysicsPush(
+                     &space_, kinematic_, [](unsigned int) { return STANDOFF; }, settings),
                  ompl::Exception);
     settings = {};
     settings.simulation.timeStep = -1.0;
-    EXPECT_THROW(PhysicsPush(&space_, kinematic_, [](unsigned int) { return STANDOFF; }, settings),
+    EXPECT_THROW(PhysicsPush(
+                     &space_, kinematic_, [](unsigned int) { return STANDOFF; }, settings),
                  ompl::Exception);
 }
 
@@ -190,11 +232,13 @@ namespace
 TEST_F(PhysicsPushTest, TheModelAttributeChoosesThePush)
 {
     const PrimitiveFactory factory = ompl_mmphys::physicsPrimitiveFactory();
-    const auto built = [&](std::map<std::string, std::string> params)
-    { return factory.build({{"push_mobile", std::move(params), WHERE}}, &space_).front(); };
+    const auto built = [&](std::map<std::string, std::string> params) {
+        return factory.build({{"push_mobile", std::move(params), WHERE}}, &space_).front();
+    };
     EXPECT_TRUE(std::dynamic_pointer_cast<PushMobile>(built({})));
     EXPECT_TRUE(std::dynamic_pointer_cast<PushMobile>(built({{"model", "kinematic"}})));
-    const PrimitivePtr physics = built({{"model", "physics"}, {"standoff", "0.41"}, {"push_precision", "0.002"}});
+    const PrimitivePtr physics =
+        built({{"model", "physics"}, {"standoff", "0.41"}, {"push_precision", "0.002"}});
     ASSERT_TRUE(std::dynamic_pointer_cast<PhysicsPush>(physics));
     EXPECT_EQ(physics->name(), "push_mobile");
     EXPECT_EQ(physics->kind(), PrimitiveKind::Push);
