@@ -35,17 +35,6 @@ namespace
         std::string pushModel;  ///< the model every push primitive takes, empty: the scene's
     };
 
-    /** Gives every push primitive of scene the model `model` (kinematic or physics).
-        @throws ompl_core::InputError for another model. */
-    void setPushModel(ompl_mm::Scene &scene, const std::string &model)
-    {
-        if (model != "kinematic" && model != "physics")
-            throw ompl_core::InputError("--push-model must be kinematic or physics, got '" + model + "'");
-        for (ompl_mm::PrimitiveSpec &spec : scene.primitives)
-            if (spec.type.rfind("push_", 0) == 0)
-                spec.params["model"] = model;
-    }
-
     bool parseOptions(int argc, char **argv, Options &options, int &exitCode)
     {
         po::options_description extra;
@@ -126,7 +115,7 @@ namespace
         ompl_core::PhaseTimes loading;
         ompl_mm::Scene scene = ompl_mm::loadScene(options.common.scene);
         if (!options.pushModel.empty())
-            setPushModel(scene, options.pushModel);
+            scene.setPushModel(options.pushModel);
         const auto request = options.common.request<ompl_mm::PlanningRequest>();
         ompl_mm::PlanningRun &run = apps::keepUntilExit(std::make_unique<ompl_mm::PlanningRun>(
             scene, request, loading.lap(), ompl_mmphys::physicsPrimitiveFactory()));

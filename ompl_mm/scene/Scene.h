@@ -246,6 +246,11 @@ namespace ompl_mm
         /** Index of the object called name, or -1. */
         int objectIndex(const std::string &name) const;
 
+        /** Gives every push primitive (type push_…) the `model` "kinematic" or "physics", as if
+            each push element said so (physics needs ompl_mmphys::physicsPrimitiveFactory()).
+            @throws ompl_core::InputError for another model. */
+        void setPushModel(const std::string &model);
+
         /** Index of the first surface that supports an object whose base centre is at `base` (world
             frame), or -1 when none does (the object is held). */
         int restingSurface(const Eigen::Vector3d &base) const;

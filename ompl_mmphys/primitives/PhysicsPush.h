@@ -18,11 +18,12 @@ namespace ompl_mmphys
         than `precision` from its target, the push is corrected from where the object lies, at
         most `corrections` times. A push ends before the object slides around the pusher farther
         than `slip` from the tool's heading (simulated again, ending at the waypoint before). A push
-        that tips the object over or pushes it off its surface fails. The waypoints along a push are recorded
-       every `sampleSpacing` metres of tool travel, the object kept at least the kinematic standoff from the
-       tool point (it touches the robot in the simulation, which the collision checks would not allow), so
-       that collision checks see its real track. Its motions do not end where asked (endsWhereAsked() is
-       false); explain() accepts the segments it made (and pieces of them) and no other. Not thread-safe. */
+        that tips the object over or pushes it off its surface fails. The waypoints along a push
+        are recorded every `sampleSpacing` metres of tool travel, the object kept at least the
+        kinematic standoff from the tool point (it touches the robot in the simulation, which the
+        collision checks would not allow), so that collision checks see its real track. Its
+        motions do not end where asked (endsWhereAsked() is false); explain() accepts the
+        segments it made (and pieces of them) and no other. Not thread-safe. */
     class PhysicsPush : public ompl_mm::Primitive
     {
     public:

@@ -98,6 +98,12 @@ PYBIND11_MODULE(_ompl_mm, m)
                                        names.push_back(object.name);
                                    return names;
                                })
+        .def(
+            "__copy__", [](const Scene &scene) { return Scene(scene); },
+            "An independent copy (copy.copy): changing it leaves this scene as it is.")
+        .def("set_push_model", &Scene::setPushModel, py::arg("model"),
+             "Gives every push primitive the model 'kinematic' or 'physics' (physics-aware pushes), as "
+             "if each push element said so; ompl_core.InputError for another model.")
         .def("__repr__", [](const Scene &scene) { return "<ompl_mm.Scene '" + scene.name + "'>"; });
 
     m.def("load_scene", &loadScene, py::arg("path"),

@@ -262,7 +262,7 @@ expect_bad_option "--param probabilities that contradict each other" \
     "command line option --param: MOPL: undefined_probability + start_value_probability exceeds 1" \
     "$scene" --param undefined_probability=0.8
 
-expect_bad_option "--push-model unknown" "--push-model must be kinematic or physics" "$scene" --push-model exact
+expect_bad_option "--push-model unknown" "push model must be kinematic or physics" "$scene" --push-model exact
 expect_bad_option "--seed 0" "--seed" "$scene" --seed 0
 expect_bad_option "--seed -1" "--seed" "$scene" --seed -1
 expect_bad_option "--seed 2^32" "--seed" "$scene" --seed 4294967296

@@ -280,3 +280,20 @@ def test_simulate_gives_the_apps_physics_check(tmp_path):
         first = names.index(f"sim.{name}.x") - 2
         numpy.testing.assert_allclose(track, rows[:, first:first + 4], atol=1e-8)
     assert ompl_mm.plan(scene_path("mobile_blocked"), seed=3).simulated is None
+
+
+def test_push_model_physics_plans_as_the_apps_push_model_option(tmp_path):
+    scene = ompl_mm.load_scene(scene_path("mobile_blocked"))
+    result = ompl_mm.plan(scene, seed=2, simulate=True, push_model="physics")
+    record = tmp_path / "app.json"
+    subprocess.run([APP, scene_path("mobile_blocked"), "--seed", "2", "--simulate", "--push-model", "physics",
+                    "--json", str(record)], check=True, capture_output=True)
+    with open(record, encoding="utf-8") as f:
+        app_check = json.load(f)["physics_check"]
+    assert result.record["physics_check"]["confirmed"]
+    assert without_times(result.record["physics_check"]) == without_times(app_check)
+    # the scene passed in keeps its kinematic pushes: the same seed plans as before
+    kinematic = ompl_mm.plan(scene, seed=2, simulate=True)
+    assert not kinematic.record["physics_check"]["confirmed"]
+    with pytest.raises(ompl_mm.InputError, match="push model must be kinematic or physics, got 'exact'"):
+        ompl_mm.plan(scene, push_model="exact")

@@ -1,5 +1,7 @@
 #include "ompl_mm/scene/Scene.h"
 
+#include "ompl_core/io/InputError.h"
+
 #include <ompl/util/Exception.h>
 
 #include <cmath>
@@ -76,5 +78,14 @@ namespace ompl_mm
             if (surfaces[i].supports(base))
                 return static_cast<int>(i);
         return -1;
+    }
+
+    void Scene::setPushModel(const std::string &model)
+    {
+        if (model != "kinematic" && model != "physics")
+            throw ompl_core::InputError("the push model must be kinematic or physics, got '" + model + "'");
+        for (PrimitiveSpec &spec : primitives)
+            if (spec.type.rfind("push_", 0) == 0)
+                spec.params["model"] = model;
     }
 }  // namespace ompl_mm

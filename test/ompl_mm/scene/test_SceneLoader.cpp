@@ -159,6 +159,27 @@ TEST(SceneLoader, LoadsMobileBlocked)
     }
 }
 
+TEST(SceneLoader, SetPushModelGivesEveryPushTheModelAndNothingElse)
+{
+    Scene scene = loadScene(OMPL_MM_SCENES_DIR "/kuka_cabinet.xml");
+    const std::vector<PrimitiveSpec> before = scene.primitives;
+    scene.setPushModel("physics");
+    unsigned int pushes = 0;
+    for (std::size_t i = 0; i < before.size(); ++i)
+    {
+        std::map<std::string, std::string> expected = before[i].params;
+        if (before[i].type.rfind("push_", 0) == 0)
+        {
+            expected["model"] = "physics";
+            ++pushes;
+        }
+        EXPECT_EQ(scene.primitives[i].params, expected) << before[i].type;
+    }
+    EXPECT_EQ(pushes, 3u) << "push_interior, push_exterior, push_frontal";
+    EXPECT_TRUE(contains(inputErrorOf([&] { scene.setPushModel("exact"); }),
+                         "push model must be kinematic or physics, got 'exact'"));
+}
+
 TEST(SceneLoader, AnglesInDegreesOrRadians)
 {
     std::vector<std::string> lines = replaced(

@@ -16,9 +16,7 @@ namespace
     Scene physicsPushScene()
     {
         Scene scene = mobileBlockedScene();
-        for (PrimitiveSpec &spec : scene.primitives)
-            if (spec.type.rfind("push_", 0) == 0)
-                spec.params["model"] = "physics";
+        scene.setPushModel("physics");
         return scene;
     }
 
