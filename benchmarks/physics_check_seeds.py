@@ -9,6 +9,7 @@ Examples:
 """
 import argparse
 import collections
+import os
 import statistics
 import sys
 import tempfile
@@ -62,6 +63,7 @@ def main():
                         help="comma-separated push models to compare, each seed run with each in turn: "
                              "scene (the scene's own), kinematic, physics; default scene")
     parser.add_argument("--binary", default="build/apps/ompl_mm_plan")
+    parser.add_argument("--records", help="folder that keeps every run's JSON record (default: a temporary one)")
     args = parser.parse_args()
     check_binary(args.binary)
     models = args.push_models.split(",")
@@ -69,7 +71,9 @@ def main():
         if model not in ("scene", "kinematic", "physics"):
             sys.exit(f"unknown push model '{model}' (scene, kinematic, physics)")
     runs = {model: [] for model in models}
-    with tempfile.TemporaryDirectory() as workdir:
+    with tempfile.TemporaryDirectory() as temporary:
+        workdir = args.records or temporary
+        os.makedirs(workdir, exist_ok=True)
         for seed in range(1, args.seeds + 1):
             for model in models:
                 extra = ("--simulate",) if model == "scene" else ("--simulate", "--push-model", model)

@@ -21,7 +21,8 @@ namespace ompl_mmphys
         that tips the object over or pushes it off its surface fails. The waypoints along a push
         are recorded every `sampleSpacing` metres of tool travel, the object kept at least the
         kinematic standoff from the tool point (it touches the robot in the simulation, which the
-        collision checks would not allow), so that collision checks see its real track. Its
+        collision checks would not allow), so that collision checks see its real track; at the
+        end, the tool backed away, the object lies exactly where the simulation left it. Its
         motions do not end where asked (endsWhereAsked() is false); explain() accepts the
         segments it made (and pieces of them) and no other. Not thread-safe. */
     class PhysicsPush : public ompl_mm::Primitive

@@ -201,8 +201,8 @@ namespace ompl_mmphys
         const double tilt = simulated.tilt;
         bool made = false;
         if (tilt > settings_.tilt)
-            rejectBecause("the push tips object '" + name + "' over (" + std::to_string(tilt * 180.0 / M_PI) +
-                          " degrees)");
+            rejectBecause("the push tips object '" + name + "' over (more than " +
+                          std::to_string(std::lround(settings_.tilt * 180.0 / M_PI)) + " degrees)");
         else if (surface < 0)
             rejectBecause("the push moves object '" + name + "' off its surface");
         else
@@ -216,9 +216,12 @@ namespace ompl_mmphys
                 ompl_mm::ObjectPose pose = simulated.poses[i];
                 pose.position.z() = height;  // resting, as the planner's states hold objects
                 space_->setObjectPose(waypoints[i], object, pose);
-                keepStandoff(waypoints[i], object);
-                // the robot touches the object until it has backed away at the end
-                appendMade(trajectory, waypoints[i], push, i + 1 == waypoints.size());
+                // the robot touches the object until it has backed away at the end, where the
+                // object stays exactly where physics left it: the next motion starts from there
+                const bool end = i + 1 == waypoints.size();
+                if (!end)
+                    keepStandoff(waypoints[i], object);
+                appendMade(trajectory, waypoints[i], push, end);
             }
         }
         for (ompl::base::State *state : waypoints)

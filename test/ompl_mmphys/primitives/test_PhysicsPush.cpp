@@ -93,6 +93,33 @@ TEST_F(PhysicsPushTest, TheWholePlanSimulationEndsEachPushWhereThePushPutItsObje
     EXPECT_GT(compared, 1u);
 }
 
+TEST_F(PhysicsPushTest, APushEndsWithTheObjectExactlyWhereTheSimulationLeftIt)
+{
+    // backing away 1 mm only, the disc stays closer than the standoff (the pushed cylinder rests
+    // 0.40 m from the tool point, the standoff is 0.41 m): the end must not be moved to the
+    // standoff, or the next motion would start 1 cm from where physics has the object
+    PhysicsPush::Settings settings;
+    settings.retreat = 0.001;
+    const auto close = std::make_shared<PhysicsPush>(
+        &space_, kinematic_, [](unsigned int) { return STANDOFF; }, settings);
+    Trajectory trajectory(&space_);
+    trajectory.reset(start_);
+    ASSERT_TRUE(close->propagate(start_, target_, trajectory)) << close->takeRejection();
+    const ompl_mmphys::SimulatedPlan simulated = ompl_mmphys::simulatePlan(pathOf(trajectory));
+    std::size_t ends = 0;
+    for (std::size_t i = 1; i < trajectory.size(); ++i)
+        if (trajectory.label(i - 1).kind == PrimitiveKind::Push && trajectory.branchable(i))
+        {
+            const Eigen::Vector3d planned = space_.objectPosition(trajectory.state(i), OBJ3);
+            EXPECT_LT((space_.toolPosition(trajectory.state(i)) - planned).head<2>().norm(), STANDOFF)
+                << "the tool stays close at waypoint " << i;
+            EXPECT_LT((simulated.statePoses[i][OBJ3].position - planned).head<2>().norm(), 0.003)
+                << "after the push ending at waypoint " << i;
+            ++ends;
+        }
+    EXPECT_GT(ends, 0u);
+}
+
 TEST_F(PhysicsPushTest, APushEndsBeforeItsObjectSlidesAroundThePusher)
 {
     // pushed off the diagonal, obj3 slides around the disc's rim; with a tight slip limit each
