@@ -43,6 +43,9 @@ namespace ompl_mmphys
                 (seen from the tool point, in the plane); the push ends before it slides farther,
                 where what physics makes of it would no longer be repeatable */
             double slip{M_PI / 4.0};
+            /** radians from upright that the object may tilt at any time during a push: a push
+                that rocks it farther fails, since where a rocking object lands is not repeatable */
+            double rock{M_PI / 18.0};
         };
 
         /** Simulates the pushes of `kinematic`, whose tool point stands `standoff(object)` metres
@@ -103,6 +106,7 @@ namespace ompl_mmphys
         {
             std::vector<ompl_mm::ObjectPose> poses;  ///< per waypoint
             double tilt{0.0};                        ///< radians from upright at the end
+            double maxTilt{0.0};                     ///< radians from upright, the most on the way
         };
         /** Simulates the robot along waypoints (a push from its start, labelled push) with the
             objects where `from` has them, only the pushed one in the world. */

@@ -29,8 +29,10 @@ namespace ompl_mmphys
             {
             }
             void reached(std::size_t waypoint) override { poses[waypoint] = world_.objectPose(object_); }
+            void stepped(const double *) override { maxTilt = std::max(maxTilt, world_.objectTilt(object_)); }
 
             std::vector<ompl_mm::ObjectPose> poses;  ///< per waypoint
+            double maxTilt{0.0};                     ///< radians from upright, the most of any step
 
         private:
             const PlanWorld &world_;
@@ -58,6 +60,7 @@ namespace ompl_mmphys
         requirePositiveSetting(settings.retreat, "retreat");
         requirePositiveSetting(settings.tilt, "tilt");
         requirePositiveSetting(settings.slip, "slip");
+        requirePositiveSetting(settings.rock, "rock");
         checkSettings(settings.simulation, "PhysicsPush");
     }
 
@@ -203,6 +206,10 @@ namespace ompl_mmphys
         if (tilt > settings_.tilt)
             rejectBecause("the push tips object '" + name + "' over (more than " +
                           std::to_string(std::lround(settings_.tilt * 180.0 / M_PI)) + " degrees)");
+        else if (simulated.maxTilt > settings_.rock)
+            rejectBecause("the push rocks object '" + name + "' (more than " +
+                          std::to_string(std::lround(settings_.rock * 180.0 / M_PI)) +
+                          " degrees from upright)");
         else if (surface < 0)
             rejectBecause("the push moves object '" + name + "' off its surface");
         else
@@ -251,7 +258,7 @@ namespace ompl_mmphys
         execution.execute(robot, labels, observer);
         simulationTime_ += ompl::time::seconds(ompl::time::now() - started);
         ++simulations_;
-        return {std::move(observer.poses), world.objectTilt(object)};
+        return {std::move(observer.poses), world.objectTilt(object), observer.maxTilt};
     }
 
     std::size_t PhysicsPush::slipWaypoint(const std::vector<ompl::base::State *> &waypoints,

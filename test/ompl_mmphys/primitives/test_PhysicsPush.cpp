@@ -120,6 +120,42 @@ TEST_F(PhysicsPushTest, APushEndsWithTheObjectExactlyWhereTheSimulationLeftIt)
     EXPECT_GT(ends, 0u);
 }
 
+TEST(PhysicsPushRocking, APushThatRocksItsObjectFailsThoughItEndsUpright)
+{
+    // obj3 a box 0.2 x 0.2 x 0.6 m: the disc's push rocks it beyond 10 degrees, and it settles
+    // back upright (measured: boxes 0.1 and 0.15 m wide tip over, 0.25 m wide stay upright)
+    Scene scene = mobileBlockedScene();
+    scene.objects[OBJ3].shape.kind = Shape::Kind::Box;
+    scene.objects[OBJ3].shape.boxSize = Eigen::Vector3d(0.2, 0.2, 0.6);
+    ManipulationSetup setup(scene);
+    const ManipulationStateSpace &space = *setup.manipulationSpace();
+    ompl::base::State *start = space.cloneState(setup.getProblemDefinition()->getStartState(0));
+    setRobot(space, start, -2.1, -2.1);
+    ompl::base::State *target = space.cloneState(start);
+    ObjectPose goal = space.objectPose(start, OBJ3);
+    goal.position.head<2>() = Eigen::Vector2d(-0.9, -0.9);
+    space.setObjectPose(target, OBJ3, goal);
+    const auto pushWith = [&](const PhysicsPush::Settings &settings, std::string &rejection)
+    {
+        PhysicsPush push(
+            &space, std::make_shared<PushMobile>(&space, STANDOFF), [](unsigned int) { return STANDOFF; },
+            settings);
+        Trajectory trajectory(&space);
+        trajectory.reset(start);
+        const bool pushed = push.propagate(start, target, trajectory);
+        rejection = push.takeRejection();
+        return pushed;
+    };
+    std::string rejection;
+    EXPECT_FALSE(pushWith(PhysicsPush::Settings(), rejection));
+    EXPECT_EQ(rejection, "the push rocks object 'obj3' (more than 10 degrees from upright)");
+    PhysicsPush::Settings lenient;
+    lenient.rock = M_PI / 4.0;
+    EXPECT_TRUE(pushWith(lenient, rejection)) << rejection;
+    space.freeState(start);
+    space.freeState(target);
+}
+
 TEST_F(PhysicsPushTest, APushEndsBeforeItsObjectSlidesAroundThePusher)
 {
     // pushed off the diagonal, obj3 slides around the disc's rim; with a tight slip limit each
@@ -229,6 +265,11 @@ TEST_F(PhysicsPushTest, BadSettingsAreRefused)
 {
     PhysicsPush::Settings settings;
     settings.precision = 0.0;
+    EXPECT_THROW(PhysicsPush(
+                     &space_, kinematic_, [](unsigned int) { return STANDOFF; }, settings),
+                 ompl::Exception);
+    settings = {};
+    settings.rock = -1.0;
     EXPECT_THROW(PhysicsPush(
                      &space_, kinematic_, [](unsigned int) { return STANDOFF; }, settings),
                  ompl::Exception);
