@@ -58,7 +58,9 @@ def report(scene, model, runs):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("scene")
-    parser.add_argument("--seeds", type=int, default=100, help="number of seeds (1..N), default 100")
+    parser.add_argument("--seeds", type=int, default=100, help="number of seeds, default 100")
+    parser.add_argument("--first-seed", type=int, default=1,
+                        help="the first seed (seeds FIRST..FIRST+N-1), default 1: shards of one run")
     parser.add_argument("--push-models", default="scene",
                         help="comma-separated push models to compare, each seed run with each in turn: "
                              "scene (the scene's own), kinematic, physics; default scene")
@@ -74,7 +76,7 @@ def main():
     with tempfile.TemporaryDirectory() as temporary:
         workdir = args.records or temporary
         os.makedirs(workdir, exist_ok=True)
-        for seed in range(1, args.seeds + 1):
+        for seed in range(args.first_seed, args.first_seed + args.seeds):
             for model in models:
                 extra = ("--simulate",) if model == "scene" else ("--simulate", "--push-model", model)
                 runs[model].append(run_app(args.binary, args.scene, seed, workdir, extra=extra))

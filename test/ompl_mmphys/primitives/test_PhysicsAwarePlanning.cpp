@@ -50,7 +50,7 @@ TEST_F(PhysicsAwarePlanningTest, OnceTheObjectsMeetTheGoalTheRobotsTransitThereI
     // the goal tree cannot root where physics leaves the objects: without the transit planned from
     // the start tree, seed 2 takes tens of thousands of iterations (not solved in 10 s)
     setup_.mopl()->setSeed(2);
-    ASSERT_TRUE(setup_.solve(10.0));
+    ASSERT_TRUE(setup_.solve(120.0));  // under the sanitizers too
     EXPECT_TRUE(setup_.haveExactSolutionPath());
     EXPECT_LT(setup_.mopl()->statistics().iterations, 5000u);
     const ompl_mmphys::PhysicsCheck check = ompl_mmphys::checkPlan(setup_, setup_.manipulationPath());
@@ -67,7 +67,7 @@ TEST_F(PhysicsAwarePlanningTest, TheSimplifierSeesThatPushesAreSimulated)
 TEST_F(PhysicsAwarePlanningTest, SmoothingShortensTheStretchesBetweenPushesAndKeepsEveryPush)
 {
     setup_.mopl()->setSeed(1);
-    ASSERT_TRUE(setup_.solve(30.0));
+    ASSERT_TRUE(setup_.solve(120.0));
     ManipulationPath &path = setup_.manipulationPath();
     // a detour into a transit of the path: out sideways to a free place and back
     const auto si = setup_.getSpaceInformation();
