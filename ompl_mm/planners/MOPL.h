@@ -77,6 +77,10 @@ namespace ompl_mm
         among few it picks each often, and clearing only scatters the objects that the goal tree's
         layouts must match.
 
+        Simulated primitives (Primitive::endsWhereAsked() false, e.g. physics-aware pushes): the goal
+        tree leaves them out, and once a start-tree vertex holds every object where the goal wants it,
+        the robot's transit to the goal is planned from there (transitToGoal()).
+
         @par External documentation
         S. Jentzsch, A. Gaschler, O. Khatib, A. Knoll, "MOPL: A multi-modal path planner for generic
         manipulation tasks", IEEE/RSJ International Conference on Intelligent Robots and Systems
