@@ -478,7 +478,10 @@ namespace ompl_mm
     int MOPL::transitToGoal(int vertex, const ob::PlannerTerminationCondition &ptc)
     {
         const ob::State *from = startTree_->vertex(vertex).state;
-        if (startTree_->vertex(vertex).group == ManipulationTree::NO_GROUP)
+        std::vector<double> layout = objectLayout(*space_, from);
+        // called after every forward extension: the cheap checks before the goal's completion
+        if (startTree_->vertex(vertex).group == ManipulationTree::NO_GROUP ||
+            std::find(goalLayoutsTried_.begin(), goalLayoutsTried_.end(), layout) != goalLayoutsTried_.end())
             return -1;
         PartialState here(space_);
         space_->copyState(here.state(), from);
@@ -486,9 +489,7 @@ namespace ompl_mm
         ob::State *goal = space_->allocState();
         goal_->complete(here, goal, rng_, true);
         int reached = -1;
-        std::vector<double> layout = objectLayout(*space_, from);
-        if (!space_->anyObjectMoves(from, goal) && si_->isValid(goal) &&
-            std::find(goalLayoutsTried_.begin(), goalLayoutsTried_.end(), layout) == goalLayoutsTried_.end())
+        if (!space_->anyObjectMoves(from, goal) && si_->isValid(goal))
         {
             goalLayoutsTried_.push_back(std::move(layout));
             Trajectory transit(space_);
