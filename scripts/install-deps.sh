@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian bookworm packages the project needs, when any is missing.
+# Installs the Debian bookworm packages the project needs, and any package named on the command line
+# (scripts/fuzz.sh adds clang's), when one is missing.
 set -euo pipefail
 
 packages=(
@@ -9,6 +10,7 @@ packages=(
   libode-dev libassimp-dev libgtest-dev librsvg2-bin doxygen
   ompl-demos parallel python3-matplotlib libjs-three chromium liborocos-kdl-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-pandas
+  "$@"
 )
 
 missing=()

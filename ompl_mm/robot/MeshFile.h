@@ -7,6 +7,12 @@
 #include <memory>
 #include <string>
 
+namespace Assimp
+{
+    class Importer;
+}
+struct aiScene;
+
 namespace ompl_mm
 {
     /** The file a URDF mesh element's filename names: a relative name against the URDF's folder,
@@ -17,6 +23,12 @@ namespace ompl_mm
         "file://" is dropped.
         @returns the path, or "" when no candidate exists; tried lists the places looked. */
     std::string resolveMeshFile(const std::string &filename, const std::string &urdfFile, std::string &tried);
+
+    /** Reads a mesh file with importer and the post-processing steps given (a COLLADA file's up axis
+        ignored, as in ROS), a COLLADA file after the checks assimp 5.2 lacks (checkColladaFile()).
+        @returns the scene, owned by importer.
+        @throws std::runtime_error with the file's line, or with the reader's message. */
+    const aiScene &importMeshFile(Assimp::Importer &importer, const std::string &path, unsigned int steps);
 
     /** The key of a mesh file read at a scale, for caches of what is read from it. */
     std::string meshCacheKey(const std::string &path, const Eigen::Vector3d &scale);

@@ -1,10 +1,14 @@
 #include "ompl_mm/robot/MeshFile.h"
 
+#include "ompl_mm/robot/ColladaCheck.h"
+
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -23,6 +27,14 @@ namespace ompl_mm
         {
             std::error_code error;
             return fs::is_regular_file(path, error);
+        }
+
+        bool isColladaFile(const std::string &path)
+        {
+            std::string extension = fs::path(path).extension().string();
+            std::transform(extension.begin(), extension.end(), extension.begin(),
+                           [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+            return extension == ".dae";
         }
 
         /** Tries path, noting it in tried. */
@@ -79,6 +91,19 @@ namespace ompl_mm
         return "";
     }
 
+    const aiScene &importMeshFile(Assimp::Importer &importer, const std::string &path, unsigned int steps)
+    {
+        if (isColladaFile(path))
+            checkColladaFile(path);
+        // COLLADA files declare an up axis (most Z_UP); assimp would turn them to Y_UP, while ROS
+        // (RViz, geometric_shapes) takes their coordinates as they are, z up
+        importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+        const aiScene *scene = importer.ReadFile(path, steps);
+        if (scene == nullptr)
+            throw std::runtime_error(importer.GetErrorString());
+        return *scene;
+    }
+
     std::string meshCacheKey(const std::string &path, const Eigen::Vector3d &scale)
     {
         std::ostringstream key;
@@ -95,19 +120,14 @@ namespace ompl_mm
             return cached->second;
 
         Assimp::Importer importer;
-        // COLLADA files declare an up axis (most Z_UP); assimp would turn them to Y_UP, while ROS
-        // (RViz, geometric_shapes) takes their coordinates as they are, z up
-        importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-        const aiScene *scene =
-            importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                        aiProcess_PreTransformVertices | aiProcess_SortByPType);
-        if (scene == nullptr)
-            throw std::runtime_error(importer.GetErrorString());
+        const aiScene &scene = importMeshFile(importer, path,
+                                              aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                                  aiProcess_PreTransformVertices | aiProcess_SortByPType);
         auto mesh = std::make_shared<TriangleMesh>();
         mesh->file = path;
-        for (unsigned int m = 0; m < scene->mNumMeshes; ++m)
+        for (unsigned int m = 0; m < scene.mNumMeshes; ++m)
         {
-            const aiMesh &part = *scene->mMeshes[m];
+            const aiMesh &part = *scene.mMeshes[m];
             const int offset = static_cast<int>(mesh->vertices.size());
             for (unsigned int v = 0; v < part.mNumVertices; ++v)
                 mesh->vertices.emplace_back(scale.x() * part.mVertices[v].x, scale.y() * part.mVertices[v].y,

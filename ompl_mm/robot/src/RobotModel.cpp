@@ -70,6 +70,44 @@ namespace ompl_mm
             return out.str();
         }
 
+        /** The link attribute of joint's child element tag ("parent" or "child"), or "". */
+        std::string jointLink(const tinyxml2::XMLElement &joint, const char *tag)
+        {
+            const tinyxml2::XMLElement *element = joint.FirstChildElement(tag);
+            const char *link = element != nullptr ? element->Attribute("link") : nullptr;
+            return link != nullptr ? link : "";
+        }
+
+        /** Checks that the joints make a tree of the links: no link is the child of two joints and no
+            joint closes a loop. urdfdom links the tree before it checks it and leaves such a graph a
+            cycle of shared pointers, never freed; missing links and names it reports itself. */
+        void checkLinkTree(const tinyxml2::XMLElement &robot, const UrdfSource &source)
+        {
+            std::map<std::string, std::pair<std::string, std::string>> parentOf;  // link: joint, link
+            for (auto *e = robot.FirstChildElement("joint"); e != nullptr; e = e->NextSiblingElement("joint"))
+            {
+                const char *name = e->Attribute("name");
+                const std::string parent = jointLink(*e, "parent"), child = jointLink(*e, "child");
+                if (name == nullptr || parent.empty() || child.empty())
+                    continue;
+                if (const auto earlier = parentOf.find(child); earlier != parentOf.end())
+                    throw source.jointError(name, "link '" + child + "' is already the child of joint '" +
+                                                      earlier->second.first +
+                                                      "': the links must form a tree");
+                // the joints so far form a tree, so this walk up from the parent ends at its root
+                for (auto link = parent;; link = parentOf.at(link).second)
+                {
+                    if (link == child)
+                        throw source.jointError(name, "closes a loop: its child link '" + child +
+                                                          "' is its parent link '" + parent +
+                                                          "' or above it");
+                    if (parentOf.count(link) == 0)
+                        break;
+                }
+                parentOf.emplace(child, std::make_pair(name, parent));
+            }
+        }
+
         /** Checks the XML and indexes elements; also catches moving joints without <limit>, which
             urdfdom rejects without saying which joint. */
         UrdfSource indexElements(const std::string &urdf, const std::string &sourceName)
@@ -106,6 +144,7 @@ namespace ompl_mm
                 if ((type == "revolute" || type == "prismatic") && e->FirstChildElement("limit") == nullptr)
                     throw source.jointError(name, type + " joint has no <limit>");
             }
+            checkLinkTree(*robot, source);
             return source;
         }
 

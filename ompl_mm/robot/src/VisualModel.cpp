@@ -61,21 +61,19 @@ namespace ompl_mm
             if (const auto cached = cache.find(key); cached != cache.end())
                 return cached->second;
             Assimp::Importer importer;
-            importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
             // without normals and texture coordinates, corners at one place become one vertex
             importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TEXCOORDS |
                                                                     aiComponent_COLORS |
                                                                     aiComponent_TANGENTS_AND_BITANGENTS);
-            const aiScene *scene = importer.ReadFile(
-                path, aiProcess_RemoveComponent | aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                          aiProcess_PreTransformVertices | aiProcess_SortByPType);
-            if (scene == nullptr)
-                throw std::runtime_error(importer.GetErrorString());
+            const aiScene &scene = importMeshFile(importer, path,
+                                                  aiProcess_RemoveComponent | aiProcess_Triangulate |
+                                                      aiProcess_JoinIdenticalVertices |
+                                                      aiProcess_PreTransformVertices | aiProcess_SortByPType);
             // the meshes of each material, gathered into one part
             std::map<unsigned int, std::shared_ptr<TriangleMesh>> byMaterial;
-            for (unsigned int m = 0; m < scene->mNumMeshes; ++m)
+            for (unsigned int m = 0; m < scene.mNumMeshes; ++m)
             {
-                const aiMesh &piece = *scene->mMeshes[m];
+                const aiMesh &piece = *scene.mMeshes[m];
                 std::shared_ptr<TriangleMesh> &part = byMaterial[piece.mMaterialIndex];
                 if (!part)
                 {
@@ -99,8 +97,8 @@ namespace ompl_mm
                 if (part->triangles.empty())
                     continue;
                 part->measure();
-                parts.push_back({part, material < scene->mNumMaterials
-                                           ? materialColour(*scene->mMaterials[material])
+                parts.push_back({part, material < scene.mNumMaterials
+                                           ? materialColour(*scene.mMaterials[material])
                                            : std::nullopt});
             }
             if (parts.empty())

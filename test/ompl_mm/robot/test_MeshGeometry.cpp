@@ -484,6 +484,60 @@ TEST_F(MeshGeometry, MalformedColladaIsAnErrorAtTheLinksLineNamingTheFile)
     }
 }
 
+TEST_F(MeshGeometry, ColladaThatAssimpWouldMisreadIsAnErrorAtItsLine)
+{
+    // assimp 5.2's COLLADA reader never stops on a letter in an index list (filling the memory),
+    // crashes on an array without a count or of count 0 with values and on short strips, aborts on
+    // primitives without their <p>, and reads past an array's end for an accessor or a count
+    // larger than the array
+    const std::string valid = boxDae(Eigen::Vector3d(0.05, 0.1, 0.15), 1.0);
+    const auto at = [&valid](const std::string &text)
+    {
+        const std::string before = valid.substr(0, valid.find(text));
+        return "line " + std::to_string(1 + std::count(before.begin(), before.end(), '\n')) + ": ";
+    };
+    const std::string array = "<float_array id=\"box-positions-array\" count=\"24\">";
+    const std::string accessor = "<accessor source=\"#box-positions-array\" count=\"8\"";
+    const std::string head = valid.substr(0, valid.find("<COLLADA"));
+    const std::string indices =
+        valid.substr(valid.find("<p>0 2 1"), valid.find("</p>") + 4 - valid.find("<p>0 2 1"));
+    const std::string triangles =
+        valid.substr(valid.find("<triangles"), valid.find("</triangles>") + 12 - valid.find("<triangles"));
+    const std::string input = "<input semantic=\"VERTEX\" source=\"#box-vertices\" offset=\"0\"/>";
+    // what is replaced, by what, and the message
+    const std::vector<std::array<std::string, 3>> cases = {
+        {"<p>0 2 1", "<p>0 2 2.5", at("<p>0 2 1") + "<p> holds '2.5', not a whole number"},
+        {"<p>0 2 1", "<p>0 2 x", at("<p>0 2 1") + "<p> holds 'x', not a whole number"},
+        {"<p>0 2 1", "<p>0 2 1e3", at("<p>0 2 1") + "<p> holds '1e3', not a whole number"},
+        {array, "<float_array id=\"box-positions-array\" count=\"0\">",
+         at(array) + "<float_array> count=\"0\" but it holds 24 values"},
+        {array, "<float_array id=\"box-positions-array\" count=\"1x\">",
+         at(array) + "<float_array> count=\"1x\" is not a count"},
+        {array, "<float_array id=\"box-positions-array\">",
+         at(array) + "<float_array> has no count (COLLADA requires it)"},
+        {accessor, "<accessor source=\"#box-positions-array\" count=\"9\"",
+         at(accessor) + "<accessor> reads 27 values of 'box-positions-array', which holds 24"},
+        {indices, "", at("<triangles") + "<triangles> of count 12 has 0 <p>, not one"},
+        {triangles, "<tristrips count=\"1\">" + input + "<p>0 2</p></tristrips>",
+         at("<triangles") + "<p> holds 2 indices: not 3 vertices or more of 1 each"},
+        {triangles, "<polygons count=\"2\">" + input + "<p>0 2 1</p></polygons>",
+         at("<triangles") + "<polygons> count=\"2\" but it has 1 <p>"},
+        {valid, "<!-- no element -->", "no <COLLADA> element"},
+        {valid, head + "<collada/>", at("<COLLADA") + "<collada> is not <COLLADA>"}};
+    for (const auto &[text, replacement, message] : cases)
+    {
+        SCOPED_TRACE(replacement.substr(0, 60));
+        std::string bad = valid;
+        bad.replace(bad.find(text), text.size(), replacement);
+        const fs::path mesh = dir_ / "robots" / "meshes" / "misread.dae";
+        std::ofstream(mesh) << bad;
+        const fs::path urdf = writeUrdf(dir_, mobileUrdf(collision("meshes/misread.dae", "1 1 1")));
+        EXPECT_EQ(
+            inputErrorOf([&] { RobotModel::fromUrdfFile(urdf.string()); }),
+            urdf.string() + ":20: link 'body': mesh '" + mesh.string() + "' cannot be read: " + message);
+    }
+}
+
 TEST_F(MeshGeometry, ExactMeshAnswersAreTheTrianglesOwnAroundTheNotch)
 {
     // the checks go through the L's hull first; their answers must be those of the triangles

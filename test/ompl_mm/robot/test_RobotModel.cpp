@@ -481,6 +481,48 @@ namespace ompl_mm
                 "arm.urdf:" + std::to_string(line) + ": joint 'shoulder': revolute joint has no <limit>");
         }
 
+        TEST(RobotModel, JointsThatDoNotFormATreeAreErrorsAtTheJointThatBreaksIt)
+        {
+            // base -> arm -> hand, then one more joint (urdfdom would leave such a graph a cycle of
+            // shared pointers, never freed)
+            const auto urdfWith = [](const std::string &parent, const std::string &child)
+            {
+                return "<robot name=\"tree\">\n"
+                       "  <link name=\"base\"/>\n"
+                       "  <link name=\"arm\"/>\n"
+                       "  <link name=\"hand\"/>\n"
+                       "  <joint name=\"shoulder\" type=\"fixed\"><parent link=\"base\"/><child "
+                       "link=\"arm\"/></joint>\n"
+                       "  <joint name=\"wrist\" type=\"fixed\"><parent link=\"arm\"/><child "
+                       "link=\"hand\"/></joint>\n"
+                       "  <joint name=\"extra\" type=\"fixed\"><parent link=\"" +
+                       parent + "\"/><child link=\"" + child +
+                       "\"/></joint>\n"
+                       "</robot>\n";
+            };
+            const auto error = [&](const std::string &parent, const std::string &child) {
+                return inputErrorOf([&]
+                                    { RobotModel::fromUrdfString(urdfWith(parent, child), "tree.urdf"); });
+            };
+            EXPECT_EQ(error("base", "hand"),
+                      "tree.urdf:7: joint 'extra': link 'hand' is already the child of "
+                      "joint 'wrist': the links must form a tree");
+            EXPECT_EQ(error("hand", "base"),
+                      "tree.urdf:7: joint 'extra': closes a loop: its child link 'base' is "
+                      "its parent link 'hand' or above it");
+            EXPECT_EQ(error("hand", "hand"),
+                      "tree.urdf:7: joint 'extra': link 'hand' is already the child of "
+                      "joint 'wrist': the links must form a tree");
+            // a link that is its own parent, with no other parent
+            const std::string self =
+                "<robot name=\"self\">\n  <link name=\"base\"/>\n  <link name=\"a\"/>\n"
+                "  <joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"a\"/></joint>\n"
+                "</robot>\n";
+            EXPECT_EQ(inputErrorOf([&] { RobotModel::fromUrdfString(self, "self.urdf"); }),
+                      "self.urdf:4: joint 'j': closes a loop: its child link 'a' is its parent link 'a' or "
+                      "above it");
+        }
+
         TEST(RobotModel, SceneMobileDiscHasTwoPrismaticJointsAndASphere)
         {
             const RobotModel robot =

@@ -241,6 +241,28 @@ TEST_F(VisualModelFiles, UnreadableMeshFallsBackToo)
     EXPECT_TRUE(contains(model.links()[0].warning, "cannot be read")) << model.links()[0].warning;
 }
 
+TEST_F(VisualModelFiles, ColladaWithALetterInAnIndexListFallsBackNamingItsLine)
+{
+    // assimp 5.2's COLLADA reader never stops on such a list, filling the memory
+    std::ofstream(folder_ / "meshes" / "letter.dae")
+        << "<?xml version=\"1.0\"?>\n"
+           "<COLLADA version=\"1.4.1\"><library_geometries><geometry id=\"g\"><mesh>\n"
+           "<source id=\"s\"><float_array id=\"f\" count=\"9\">0 0 0 1 0 0 0 1 0</float_array></source>\n"
+           "<vertices id=\"v\"><input semantic=\"POSITION\" source=\"#s\"/></vertices>\n"
+           "<triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#v\" offset=\"0\"/><p>0 1 "
+           "x</p></triangles>\n"
+           "</mesh></geometry></library_geometries></COLLADA>\n";
+    const fs::path urdf = writeUrdf(
+        folder_,
+        chainUrdf({{"a", "<visual><geometry><mesh filename=\"meshes/letter.dae\"/></geometry></visual>" +
+                             std::string(COLLISION)}}));
+    const VisualModel model = readBoth(urdf);
+    EXPECT_TRUE(model.links()[0].fromCollision);
+    EXPECT_TRUE(
+        contains(model.links()[0].warning, "cannot be read (line 5: <p> holds 'x', not a whole number)"))
+        << model.links()[0].warning;
+}
+
 TEST_F(VisualModelFiles, BadVisualsAreErrorsAtTheirLine)
 {
     // the robot from a file without visuals (urdfdom would refuse some of the bad ones first)
