@@ -1,9 +1,16 @@
 #!/usr/bin/env python3
 """Mutation testing of the test suite: applies each mutant of mutants.txt (one small deliberate
 bug in an important line) to a scratch copy of the sources, one at a time, rebuilds incrementally,
-runs the suite and counts the mutant killed when a test fails. Prints the score (killed / total)
-and lists the survivors: lines no test guards. Not part of CI (a mutant takes from seconds to a
-minute and a half); run it before closing any issue that changes core code. See docs/architecture.md.
+runs the tests that depend on the mutated file and counts the mutant killed when one fails. Prints
+the score (killed / total) and lists the survivors: lines no test guards. Not part of CI; run it
+before closing any issue that changes core code. See docs/architecture.md.
+
+Fast enough for the whole list at every need: the copy is built with shared libraries whose
+dependents are not relinked when a library changes, so a mutant recompiles its file (or the files
+including a mutated header) and relinks one library; only the tests that use a rebuilt library,
+executable or module run (a test naming no build output always runs), the mutated file's own test
+(test_<Name>) first, each test executable stopping at its first failing case and the run at the
+first failing test.
 
 Usage:
   test/mutation/run_mutants.py [--only ID[,ID...]] [--work DIR] [--jobs N] [--report FILE]
@@ -12,7 +19,9 @@ A mutant whose build fails is "stillborn" and is not counted; fix its text in mu
 """
 import argparse
 import filecmp
+import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -21,8 +30,8 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 # tests that exercise no planning code (the API docs, the layer table, the installed package) and
-# the timed fuzzing of the loaders, which their unit tests cover
-EXCLUDED_TESTS = "test_api_docs|test_layering|downstream_package|test_scene_fuzz"
+# the timed fuzzing of the readers (how many inputs it tries depends on the machine's speed)
+EXCLUDED_TESTS = "test_api_docs|test_layering|downstream_package|test_fuzz_"
 FIELDS = ("id", "file", "old", "new")
 
 
@@ -63,22 +72,98 @@ def check_applies(mutant, src):
     return text
 
 
-def run_suite(command, build, log):
-    """Runs the suite in the order the tests are declared, unit tests first: without its record of
-    earlier run times, CTest does not start the slowest (end-to-end) tests first, and a mutant is
-    mostly killed by a unit test within seconds."""
+def build_outputs(build):
+    """Modification times of the build's executables and shared libraries (ninja rewrites only what
+    it rebuilds)."""
+    times = {}
+    for folder, _, names in os.walk(build):
+        if "CMakeFiles" in folder:
+            continue
+        for name in names:
+            path = os.path.join(folder, name)
+            if (name.endswith(".so") or (os.access(path, os.X_OK) and "." not in name)) and os.path.isfile(path):
+                times[path] = os.stat(path).st_mtime_ns
+    return times
+
+
+def needed_libraries(path, outputs):
+    """The build's shared libraries that path loads, directly or through one another."""
+    by_name = {os.path.basename(o): o for o in outputs if o.endswith(".so")}
+    found, todo = set(), [path]
+    while todo:
+        dynamic = subprocess.run(["readelf", "-d", todo.pop()], capture_output=True, text=True).stdout
+        for name in re.findall(r"\(NEEDED\).*\[(.*)\]", dynamic):
+            if name in by_name and by_name[name] not in found:
+                found.add(by_name[name])
+                todo.append(by_name[name])
+    return found
+
+
+def places(output, build):
+    """The paths that name output in a test: itself, and for a shared library or module each
+    folder above it inside the build (a module path such as PYTHONPATH names the modules below)."""
+    found = [output]
+    folder = os.path.dirname(output)
+    while output.endswith(".so") and folder.startswith(build + os.sep):
+        found.append(folder)
+        folder = os.path.dirname(folder)
+    return found
+
+
+def names(path, text):
+    """Whether text holds path whole (not as the start of a longer name)."""
+    return re.search(re.escape(path) + r"(?![\w.])", text) is not None
+
+
+def test_plan(build):
+    """Each test of the suite (in declared order) with the build outputs it uses: those its command
+    or environment names (a module's folder names the modules in it), and the libraries they load."""
+    listing = json.loads(subprocess.run(["ctest", "--show-only=json-v1"], cwd=build, capture_output=True,
+                                        text=True, check=True).stdout)
+    outputs = build_outputs(build)
+    loads = {o: needed_libraries(o, outputs) for o in outputs}
+    plan = []
+    for test in listing["tests"]:
+        words = list(test.get("command", []))
+        for prop in test.get("properties", []):
+            if prop["name"] == "ENVIRONMENT":
+                words += prop["value"]
+        text = "\n".join(words)
+        used = {o for o in outputs if any(names(place, text) for place in places(o, build))}
+        for o in list(used):
+            used |= loads[o]
+        plan.append((test["name"], used))
+    return plan
+
+
+def affected_tests(plan, changed, mutated_file):
+    """The tests that use a changed output or name none, the mutated file's own test first."""
+    own = "test_" + os.path.splitext(os.path.basename(mutated_file))[0]
+    chosen = [name for name, used in plan if not used or used & changed]
+    return sorted(chosen, key=lambda name: name != own)
+
+
+def run_tests(names, build, log, jobs):
+    """Runs the named tests (in that order), stopping at the first failure; 0 when all pass."""
+    if not names:
+        return 0
+    regex = "^(" + "|".join(re.escape(n) for n in names) + ")$"
+    # without its record of earlier run times CTest keeps the given order, unit tests first
     cost_data = os.path.join(build, "Testing", "Temporary", "CTestCostData.txt")
     if os.path.exists(cost_data):
         os.remove(cost_data)
-    return run(command, build, log)
+    env = dict(os.environ, GTEST_FAIL_FAST="1")
+    return run(["ctest", "-j", str(jobs), "-R", regex, "-E", EXCLUDED_TESTS, "--stop-on-failure", "--timeout", "600"],
+               build, log, env=env)
 
 
-def run(command, cwd, log, timeout=None):
+def run(command, cwd, log, timeout=None, env=None):
     with open(log, "a") as out:
         out.write(f"$ {' '.join(command)}\n")
         out.flush()
         try:
-            return subprocess.run(command, cwd=cwd, stdout=out, stderr=subprocess.STDOUT, timeout=timeout).returncode
+            return subprocess.run(command, cwd=cwd, stdout=out, stderr=subprocess.STDOUT, timeout=timeout,
+                                  env=env).returncode
         except subprocess.TimeoutExpired:
             out.write("timed out\n")
             return 124
@@ -115,35 +200,46 @@ def main():
         check_applies(mutant, src)
 
     print(f"building the unmutated copy in {build} (log: {log})", flush=True)
-    if run(["cmake", "-S", src, "-B", build, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release"], src, log) != 0 or \
-            run(["cmake", "--build", build, "-j", str(args.jobs)], src, log) != 0:
+    started = time.monotonic()
+    # shared libraries, their dependents not relinked when one changes: a mutant relinks one library
+    configure = ["cmake", "-S", src, "-B", build, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
+                 "-DBUILD_SHARED_LIBS=ON", "-DCMAKE_LINK_DEPENDS_NO_SHARED=ON"]
+    if run(configure, src, log) != 0 or run(["cmake", "--build", build, "-j", str(args.jobs)], src, log) != 0:
         sys.exit(f"the unmutated copy does not build: see {log}")
-    ctest = ["ctest", "-j", str(args.jobs), "-E", EXCLUDED_TESTS, "--stop-on-failure", "--timeout", "600"]
-    if run_suite(ctest, build, log) != 0:
+    plan = test_plan(build)
+    if run_tests([name for name, _ in plan], build, log, args.jobs) != 0:
         sys.exit(f"the suite fails without any mutant: see {log}")
+    print(f"built and passed in {time.monotonic() - started:.0f} s", flush=True)
 
     results = []
     for k, mutant in enumerate(mutants, 1):
         path = os.path.join(src, mutant["file"])
         original = check_applies(mutant, src)
         start = time.monotonic()
+        before = build_outputs(build)
         with open(path, "w", encoding="utf-8") as f:
             f.write(original.replace(mutant["old"], mutant["new"]))
+        tests = []
         try:
             if run(["cmake", "--build", build, "-j", str(args.jobs)], src, log) != 0:
                 outcome = "stillborn"
             else:
-                outcome = "killed" if run_suite(ctest, build, log) != 0 else "survived"
+                after = build_outputs(build)
+                changed = {o for o, t in after.items() if before.get(o) != t}
+                tests = affected_tests(plan, changed, mutant["file"])
+                outcome = "killed" if run_tests(tests, build, log, args.jobs) != 0 else "survived"
         finally:
             with open(path, "w", encoding="utf-8") as f:
                 f.write(original)
         results.append((mutant, outcome))
-        print(f"[{k}/{len(mutants)}] {outcome:9} {mutant['id']} ({time.monotonic() - start:.0f} s)", flush=True)
+        print(f"[{k}/{len(mutants)}] {outcome:9} {mutant['id']} ({time.monotonic() - start:.0f} s, "
+              f"{len(tests)} tests chosen)", flush=True)
         if args.report:  # as it goes: a long run may be interrupted
             with open(args.report, "a") as f:
                 f.write(f"{outcome} {mutant['id']}\n")
     # leave the build matching the sources
     run(["cmake", "--build", build, "-j", str(args.jobs)], src, log)
+    print(f"whole run: {time.monotonic() - started:.0f} s")
 
     counted = [(m, o) for m, o in results if o != "stillborn"]
     killed = sum(1 for _, o in counted if o == "killed")

@@ -135,6 +135,42 @@ TEST_F(MobileWorld, HeldObjectMayTouchTheGripper)
     EXPECT_EQ(contact, "object 'obj2' and obstacle 'block2'");
 }
 
+TEST(CollisionWorldGrasp, LinksBelowTheToolLinkMayTouchTheHeldObjectAndNoOthers)
+{
+    // mimic_gripper's tool link is its hand; the fingers (and the knuckle and tip below the left
+    // one) hang below it. A 1 cm cube held between the open left finger's sides, above the hand,
+    // touches that finger only; moved onto the base, it touches the base, not below the hand.
+    Scene scene;
+    scene.robot.urdfFile = OMPL_MM_TEST_DATA_DIR "/robots/mimic_gripper.urdf";
+    scene.robot.toolLink = "hand";
+    MovableObject cube;
+    cube.name = "cube";
+    cube.shape.boxSize = Eigen::Vector3d::Constant(0.01);
+    scene.objects.push_back(cube);
+    const ManipulationModelPtr model = makeModel(scene);
+    const CollisionWorld world(model);
+    const RobotModel &robot = model->robot();
+    const std::vector<double> q{0.3, 0.04};  // wrist, left finger (fully open)
+    const Eigen::Isometry3d hand =
+        robot.linkFrame(q.data(), Eigen::Isometry3d::Identity(), robot.linkIndex("hand"));
+    std::vector<ObjectPose> poses(1);
+    poses[0].position =
+        hand * Eigen::Vector3d(0.0, 0.05, 0.055);  // base centre: the cube spans z 0.055..0.065
+    const std::vector<int> held{-1}, resting{0};
+    std::string contact;
+    EXPECT_TRUE(world.isCollisionFree({q.data(), &poses, &held}, &contact)) << contact;
+
+    // the same cube not held is checked against the finger like any object
+    scene.surfaces.push_back(supportSurface("floor", Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, 1), -1.0));
+    const ManipulationModelPtr withFloor = makeModel(scene);
+    EXPECT_FALSE(CollisionWorld(withFloor).isCollisionFree({q.data(), &poses, &resting}, &contact));
+    EXPECT_EQ(contact, "robot link 'left_finger' and object 'cube'");
+
+    poses[0].position = Eigen::Vector3d(0.0, 0.0, 0.045);  // into the base's top (z up to 0.05)
+    EXPECT_FALSE(world.isCollisionFree({q.data(), &poses, &held}, &contact));
+    EXPECT_EQ(contact, "robot link 'base' and object 'cube'");
+}
+
 TEST_F(MobileWorld, OverlapIsSymmetricInTheObjectPair)
 {
     // the pair is reported once, lower index first, whichever object moved

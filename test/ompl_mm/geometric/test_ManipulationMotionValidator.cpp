@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace ompl_mm;
@@ -42,6 +43,54 @@ namespace
         ob::State *below_;
     };
 }  // namespace
+
+namespace
+{
+    /** MOBILE BLOCKED without its walls: the robot can pass its joint limit (x = 2.5) without
+        touching anything. */
+    Scene openEndedScene()
+    {
+        Scene scene = mobileBlockedScene();
+        scene.obstacles.erase(std::remove_if(scene.obstacles.begin(), scene.obstacles.end(),
+                                             [](const Obstacle &o) { return o.name.rfind("wall_", 0) == 0; }),
+                              scene.obstacles.end());
+        return scene;
+    }
+
+    class OpenEndedMotions : public MobileBlockedTest
+    {
+    protected:
+        OpenEndedMotions() : MobileBlockedTest(openEndedScene()) { setup_.setup(); }
+
+        /** Whether both of the space information's checks reject the motion, the one with a last
+            valid state giving its start. */
+        bool rejected(const ob::State *from, const ob::State *to)
+        {
+            const ob::SpaceInformationPtr si = setup_.getSpaceInformation();
+            std::pair<ob::State *, double> last{nullptr, -1.0};
+            return !si->checkMotion(from, to) && !si->checkMotion(from, to, last) && last.second == 0.0;
+        }
+    };
+}  // namespace
+
+TEST_F(OpenEndedMotions, AMotionWhoseEndBreaksARuleOtherThanCollisionIsInvalid)
+{
+    const ob::SpaceInformationPtr si = setup_.getSpaceInformation();
+    const auto validator = std::dynamic_pointer_cast<ManipulationMotionValidator>(si->getMotionValidator());
+    // a transit 5 cm past the robot's joint limit, through free space
+    ob::State *from = startCopy();
+    setRobot(space_, from, 2.0, 1.9);
+    ob::State *past = startCopy();
+    setRobot(space_, past, 2.55, 1.9);
+    ASSERT_TRUE(si->isValid(from));
+    ASSERT_FALSE(si->isValid(past));
+    EXPECT_TRUE(validator->explain(from, past) == TRANSIT);
+    EXPECT_TRUE(rejected(from, past));
+    setRobot(space_, past, 2.45, 1.9);
+    EXPECT_TRUE(si->checkMotion(from, past)) << "just inside the limit";
+    // (the end's other rule, objects on their surfaces, no explained motion can break: a push that
+    // leaves its object off its surface is no push, and nothing else moves an object that rests)
+}
 
 TEST_F(MotionValidation, SetupInstallsIt)
 {
