@@ -10,6 +10,7 @@ packages=(
   libode-dev libassimp-dev libgtest-dev librsvg2-bin doxygen
   ompl-demos parallel python3-matplotlib libjs-three chromium liborocos-kdl-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-pandas
+  slurm-wlm munge sqlite3
   "$@"
 )
 
