@@ -160,8 +160,9 @@ def test_the_frame_has_every_run_of_the_quick_benchmark(benchmark):
     assert frame.groupby("problem", sort=False).size().to_dict() == {
         "mobile_blocked": 10, "kuka_table": 10, "kuka_cabinet": 10}
     assert (frame["planner"] == "mopl").all() and (frame["planner_config"] == "geometric_mopl").all()
-    assert (frame["time"] > 0).all() and (frame["solved"] == 1).all()
-    assert frame.groupby("problem")["time"].apply(list).to_dict() == database_values(db, "time")
+    assert (frame["time"] > 0).all() and frame["solved"].isin([0, 1]).all()
+    for column in ("time", "solved"):  # whether a run solved within its limit depends on the machine
+        assert frame.groupby("problem")[column].apply(list).to_dict() == database_values(db, column)
 
 
 @pytest.mark.parametrize("panel,column,unit", [(0, "time", "(s)"), (1, "path_length_m", "(m)")])

@@ -164,22 +164,22 @@ def test_ctrl_c_stops_the_plan_and_raises_keyboard_interrupt():
     assert status == 3 and out.endswith("interrupted\n"), out  # OMPL logs to stdout before
 
 
-def test_two_plans_in_two_threads_overlap():
-    """Two 1 s plans (MEKA CLEAN-UP, not solved that soon) in two threads end in less wall time than
-    the two plans' times together, which they could not while one held the GIL."""
+def test_plans_in_threads_leave_the_interpreter_free():
+    """Two 1 s plans (MEKA CLEAN-UP, not solved that soon) in two threads while this thread keeps
+    running Python: it is never held up for anywhere near a plan's second, as it would be while a
+    plan held the GIL (a measure of the interpreter's freedom, not of the machine's speed)."""
     scene = ompl_mm.load_scene(scene_path("meka_cleanup"))
     results = []
     threads = [threading.Thread(target=lambda: results.append(ompl_mm.plan(scene, seed=1, time_limit=1.0)))
                for _ in range(2)]
-    start = time.perf_counter()
     for thread in threads:
         thread.start()
-    for thread in threads:
-        thread.join()
-    wall = time.perf_counter() - start
-    planned = sum(result.time_s for result in results)
-    assert len(results) == 2 and planned > 1.8
-    assert wall < 0.8 * planned, f"{wall:.2f} s for plans of {planned:.2f} s together"
+    longest_wait, last = 0.0, time.perf_counter()
+    while any(thread.is_alive() for thread in threads):
+        now = time.perf_counter()
+        longest_wait, last = max(longest_wait, now - last), now
+    assert len(results) == 2 and all(result.time_s > 0.9 for result in results)
+    assert longest_wait < 0.5, f"this thread waited {longest_wait:.2f} s at once"
 
 
 def plan_with_setup(scene, seed, vertex_step=None):
