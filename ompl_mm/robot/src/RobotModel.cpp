@@ -11,6 +11,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <cmath>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -108,11 +109,44 @@ namespace ompl_mm
             }
         }
 
+        /** Checks that every '&' outside comments, CDATA sections and processing instructions starts
+            an entity reference (&name; &#digits; &#xhex;), as XML requires. tinyxml2 keeps a bare '&'
+            as it is, and urdfdom leaks the model it was building when it meets one. */
+        void checkAmpersands(const std::string &urdf, const std::string &sourceName)
+        {
+            static const std::regex reference("&([A-Za-z_:][-A-Za-z0-9_:.]*|#[0-9]+|#x[0-9A-Fa-f]+);");
+            static const std::vector<std::pair<std::string, std::string>> skipped = {
+                {"<!--", "-->"}, {"<![CDATA[", "]]>"}, {"<?", "?>"}};
+            std::size_t at = 0;
+            while (at < urdf.size())
+            {
+                const auto skip =
+                    std::find_if(skipped.begin(), skipped.end(),
+                                 [&](const auto &section)
+                                 { return urdf.compare(at, section.first.size(), section.first) == 0; });
+                if (skip != skipped.end())
+                {
+                    const std::size_t end = urdf.find(skip->second, at + skip->first.size());
+                    at = end == std::string::npos ? urdf.size() : end + skip->second.size();
+                    continue;
+                }
+                if (urdf[at] == '&' && !std::regex_search(urdf.substr(at, 64), reference,
+                                                          std::regex_constants::match_continuous))
+                    throw ompl_core::InputError(
+                        ompl_core::SourceLocation{
+                            sourceName,
+                            static_cast<int>(1 + std::count(urdf.begin(), urdf.begin() + at, '\n'))},
+                        "invalid URDF: malformed XML (a '&' that starts no entity reference; write &amp;)");
+                ++at;
+            }
+        }
+
         /** Checks the XML and indexes elements; also catches moving joints without <limit>, which
             urdfdom rejects without saying which joint. */
         UrdfSource indexElements(const std::string &urdf, const std::string &sourceName)
         {
             UrdfSource source{sourceName, {}, {}};
+            checkAmpersands(urdf, sourceName);
             tinyxml2::XMLDocument doc;
             if (doc.Parse(urdf.c_str(), urdf.size()) != tinyxml2::XML_SUCCESS)
                 throw ompl_core::InputError(

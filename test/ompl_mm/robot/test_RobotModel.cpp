@@ -523,6 +523,26 @@ namespace ompl_mm
                       "above it");
         }
 
+        TEST(RobotModel, ABareAmpersandIsMalformedXmlAtItsLineButNotInACommentOrCdata)
+        {
+            // urdfdom leaks the model it was building when it meets one
+            const std::string urdf = oneJointUrdf("revolute", REVOLUTE_LIMITS);
+            std::string bare = urdf;
+            bare.replace(bare.find("\"arm\"/>"), 7, "\"a&rm\"/>");  // the joint's child, line 11
+            EXPECT_EQ(inputErrorOf([&] { RobotModel::fromUrdfString(bare, "amp.urdf"); }),
+                      "amp.urdf:11: invalid URDF: malformed XML (a '&' that starts no entity reference; "
+                      "write &amp;)");
+            // escaped, or in a comment or CDATA section, it is XML (the escaped name then matches no link)
+            std::string commented = urdf;
+            commented.replace(commented.find("<robot"), 0, "<!-- Jentzsch & Gaschler -->");
+            commented.replace(commented.find("<link name=\"base\"/>"), 0, "<![CDATA[a & b]]>");
+            EXPECT_EQ(inputErrorOf([&] { RobotModel::fromUrdfString(commented, "amp.urdf"); }), "");
+            std::string escaped = bare;
+            escaped.replace(escaped.find("a&rm"), 4, "a&amp;rm&#65;&#x41;");
+            EXPECT_FALSE(ompl_core::test::contains(
+                inputErrorOf([&] { RobotModel::fromUrdfString(escaped, "amp.urdf"); }), "'&'"));
+        }
+
         TEST(RobotModel, SceneMobileDiscHasTwoPrismaticJointsAndASphere)
         {
             const RobotModel robot =
