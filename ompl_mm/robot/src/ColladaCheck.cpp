@@ -45,14 +45,15 @@ namespace ompl_mm
                                [name](const char *n) { return std::strcmp(name, n) == 0; });
         }
 
-        /** A count attribute: a whole number of at most 10 digits, or nothing. */
+        /** A count attribute: a whole number of at most 9 digits (products of two stay exact), or
+            nothing. */
         std::optional<unsigned long long> countOf(const tinyxml2::XMLElement &element, const char *attribute)
         {
             const char *text = element.Attribute(attribute);
             if (text == nullptr)
                 return std::nullopt;
             const std::string word = text;
-            if (word.empty() || word.size() > 10 ||
+            if (word.empty() || word.size() > 9 ||
                 !std::all_of(word.begin(), word.end(), [](unsigned char c) { return std::isdigit(c); }))
                 throw errorAt(element,
                               std::string(attribute) + "=\"" + word.substr(0, 20) + "\" is not a count");
@@ -132,7 +133,7 @@ namespace ompl_mm
                     const unsigned long long count = countOf(element, "count").value_or(0);
                     const unsigned long long stride = countOf(element, "stride").value_or(1);
                     const unsigned long long offset = countOf(element, "offset").value_or(0);
-                    const unsigned long long last = count == 0 ? 0 : offset + (count - 1) * stride + stride;
+                    const unsigned long long last = count == 0 ? 0 : offset + count * stride;
                     if (last > array->second)
                         throw errorAt(element, "reads " + std::to_string(last) + " values of '" +
                                                    array->first + "', which holds " +
