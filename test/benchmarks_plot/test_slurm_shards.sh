@@ -12,7 +12,7 @@ build=$(cd "$1" && pwd) source_dir=$(cd "$2" && pwd) scratch=$3
 skip() { echo "skipped: $*"; exit 77; }
 fail() { echo "not ok - $*"; exit 1; }
 
-for program in munged slurmctld slurmd sbatch squeue scontrol ompl_benchmark_statistics sqlite3; do
+for program in munged slurmctld slurmd sbatch squeue sinfo ompl_benchmark_statistics sqlite3; do
   command -v "$program" > /dev/null || skip "$program is not installed (Debian: slurm-wlm, munge, sqlite3, ompl-demos)"
 done
 [ "$(id -u)" -eq 0 ] || skip "the daemons of a test cluster run as root here; run as root (CI does)"
