@@ -91,8 +91,8 @@ namespace
                       << std::setw(7) << resident << " MB  mm solved " << mmSolved << "  phys solved "
                       << physSolved << "  " << std::setprecision(0) << seconds << " s" << std::endl;
             if (csv.is_open())
-                csv << plans << ',' << std::setprecision(3) << resident << ',' << mmSolved << ','
-                    << physSolved << ',' << std::setprecision(1) << seconds << '\n'
+                csv << plans << ',' << std::fixed << std::setprecision(3) << resident << ',' << mmSolved
+                    << ',' << physSolved << ',' << std::setprecision(1) << seconds << '\n'
                     << std::flush;
         };
         const auto start = std::chrono::steady_clock::now();
