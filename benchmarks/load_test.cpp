@@ -59,13 +59,19 @@ namespace
         }
     };
 
-    /** The solution of a manipulation run passes OMPL's check and ends in the goal. */
-    bool manipulationAnswerHolds(ompl_mm::PlanningRun &run)
+    /** What is wrong with the solution of a manipulation run: "" when it passes OMPL's check and
+        ends in the goal. */
+    std::string manipulationAnswerFault(ompl_mm::PlanningRun &run)
     {
         const ompl::geometric::PathGeometric &path = run.setup().getSolutionPath();
-        return run.pathValid().value_or(false) && path.getStateCount() > 0 &&
-               run.setup().getProblemDefinition()->getGoal()->isSatisfied(
-                   path.getState(path.getStateCount() - 1));
+        if (path.getStateCount() == 0)
+            return "the path has no state";
+        if (!run.pathValid().value_or(false))
+            return "the path fails OMPL's check";
+        if (!run.setup().getProblemDefinition()->getGoal()->isSatisfied(
+                path.getState(path.getStateCount() - 1)))
+            return "the path ends outside the goal";
+        return "";
     }
 
     int loadTest(const Options &options)
@@ -90,7 +96,8 @@ namespace
             const std::size_t scene = pick(rng);
             const std::uint32_t seed = rng();
             const double limit = std::exp(logLimit(rng));
-            bool solved = false, holds = true;
+            bool solved = false;
+            std::string fault;
             double planning = 0.0;
             if (scene < mmScenes.size())
             {
@@ -98,7 +105,7 @@ namespace
                 run.solve(forever);
                 planning = run.phases().solve;
                 solved = run.solved();
-                holds = !solved || manipulationAnswerHolds(run);
+                fault = solved ? manipulationAnswerFault(run) : "";
             }
             else
             {
@@ -107,17 +114,18 @@ namespace
                 run.solve(forever);
                 planning = run.phases().solve;
                 solved = run.solved();
-                holds = !solved || (run.simulated() != nullptr && run.simulated()->reachesGoal);
+                if (solved && !(run.simulated() != nullptr && run.simulated()->reachesGoal))
+                    fault = "the re-simulated path does not reach the goal";
             }
             ++tally.runs;
             tally.solved += solved;
             const double overshoot = planning - limit;
             tally.worstOvershoot = std::max(tally.worstOvershoot, overshoot);
-            if (!holds || overshoot > options.slack)
+            if (!fault.empty() || overshoot > options.slack)
             {
-                tally.wrong += !holds;
+                tally.wrong += !fault.empty();
                 tally.overshoots += overshoot > options.slack;
-                std::cout << (holds ? "overshoot" : "WRONG ANSWER") << ": scene "
+                std::cout << (fault.empty() ? "overshoot" : "WRONG ANSWER (" + fault + ")") << ": scene "
                           << (scene < mmScenes.size() ? options.mmScenes[scene]
                                                       : options.physScenes[scene - mmScenes.size()])
                           << " seed " << seed << " limit " << limit << " s, planning " << planning << " s"
