@@ -9,9 +9,9 @@
 
 #include <algorithm>
 #include <boost/math/constants/constants.hpp>
+#include <cctype>
 #include <cmath>
 #include <map>
-#include <regex>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -109,12 +109,46 @@ namespace ompl_mm
             }
         }
 
+        /** Whether urdf has an entity reference at `at` (&name; &#digits; &#xhex;). */
+        bool entityReferenceAt(const std::string &urdf, std::size_t at)
+        {
+            std::size_t k = at + 1;
+            const auto digitsOf = [&](bool hex)
+            {
+                const std::size_t first = k;
+                while (k < urdf.size() && (hex ? std::isxdigit(static_cast<unsigned char>(urdf[k])) != 0
+                                               : std::isdigit(static_cast<unsigned char>(urdf[k])) != 0))
+                    ++k;
+                return k > first;
+            };
+            if (k < urdf.size() && urdf[k] == '#')
+            {
+                ++k;
+                const bool hex = k < urdf.size() && urdf[k] == 'x';
+                if (hex)
+                    ++k;
+                if (!digitsOf(hex))
+                    return false;
+            }
+            else
+            {
+                const auto nameStart = [](char c)
+                { return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == ':'; };
+                if (k >= urdf.size() || !nameStart(urdf[k]))
+                    return false;
+                while (k < urdf.size() &&
+                       (nameStart(urdf[k]) || std::isdigit(static_cast<unsigned char>(urdf[k])) ||
+                        urdf[k] == '-' || urdf[k] == '.'))
+                    ++k;
+            }
+            return k < urdf.size() && urdf[k] == ';';
+        }
+
         /** Checks that every '&' outside comments, CDATA sections and processing instructions starts
-            an entity reference (&name; &#digits; &#xhex;), as XML requires. tinyxml2 keeps a bare '&'
-            as it is, and urdfdom leaks the model it was building when it meets one. */
+            an entity reference, as XML requires. tinyxml2 keeps a bare '&' as it is, and urdfdom
+            leaks the model it was building when it meets one. */
         void checkAmpersands(const std::string &urdf, const std::string &sourceName)
         {
-            static const std::regex reference("&([A-Za-z_:][-A-Za-z0-9_:.]*|#[0-9]+|#x[0-9A-Fa-f]+);");
             static const std::vector<std::pair<std::string, std::string>> skipped = {
                 {"<!--", "-->"}, {"<![CDATA[", "]]>"}, {"<?", "?>"}};
             std::size_t at = 0;
@@ -130,8 +164,7 @@ namespace ompl_mm
                     at = end == std::string::npos ? urdf.size() : end + skip->second.size();
                     continue;
                 }
-                if (urdf[at] == '&' && !std::regex_search(urdf.substr(at, 64), reference,
-                                                          std::regex_constants::match_continuous))
+                if (urdf[at] == '&' && !entityReferenceAt(urdf, at))
                     throw ompl_core::InputError(
                         ompl_core::SourceLocation{
                             sourceName,

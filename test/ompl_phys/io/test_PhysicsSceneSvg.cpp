@@ -10,7 +10,6 @@
 
 #include <gtest/gtest.h>
 
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -22,16 +21,28 @@ namespace
 {
     using Points = std::vector<Eigen::Vector2d>;
 
+    /** The text of attribute name in the element that starts at `at` of svg ("" when absent). */
+    std::string attribute(const std::string &svg, std::size_t at, const std::string &name)
+    {
+        const std::size_t end = svg.find('>', at);
+        const std::size_t found = svg.find(" " + name + "=\"", at);
+        if (found == std::string::npos || found > end)
+            return "";
+        const std::size_t first = found + name.size() + 3;
+        return svg.substr(first, svg.find('"', first) - first);
+    }
+
     /** The points of every polyline of svg stroked in colour. */
     std::vector<Points> polylines(const std::string &svg, const std::string &colour)
     {
         std::vector<Points> found;
-        const std::regex polyline("<polyline [^>]*stroke=\"" + colour + "\"[^>]* points=\"([^\"]*)\"");
-        for (auto it = std::sregex_iterator(svg.begin(), svg.end(), polyline); it != std::sregex_iterator();
-             ++it)
+        for (std::size_t at = svg.find("<polyline "); at != std::string::npos;
+             at = svg.find("<polyline ", at + 1))
         {
+            if (attribute(svg, at, "stroke") != colour)
+                continue;
             Points points;
-            std::istringstream list((*it)[1].str());
+            std::istringstream list(attribute(svg, at, "points"));
             double x, y;
             char comma;
             while (list >> x >> comma >> y)
@@ -41,14 +52,16 @@ namespace
         return found;
     }
 
-    /** The centre of the circle of svg whose attributes start with style. */
-    Eigen::Vector2d circleCentre(const std::string &svg, const std::string &style)
+    /** The centre of the first circle of svg whose fill is fill and stroke is stroke ("" for none). */
+    Eigen::Vector2d circleCentre(const std::string &svg, const std::string &fill, const std::string &stroke)
     {
-        std::smatch match;
-        const std::regex circle("<circle " + style + "[^>]* cx=\"([^\"]*)\" cy=\"([^\"]*)\"");
-        EXPECT_TRUE(std::regex_search(svg, match, circle)) << style;
-        return match.empty() ? Eigen::Vector2d::Zero()
-                             : Eigen::Vector2d(std::stod(match[1]), std::stod(match[2]));
+        for (std::size_t at = svg.find("<circle "); at != std::string::npos;
+             at = svg.find("<circle ", at + 1))
+            if (attribute(svg, at, "fill") == fill && attribute(svg, at, "stroke") == stroke)
+                return Eigen::Vector2d(std::stod(attribute(svg, at, "cx")),
+                                       std::stod(attribute(svg, at, "cy")));
+        ADD_FAILURE() << "no circle of fill " << fill << " and stroke " << stroke;
+        return Eigen::Vector2d::Zero();
     }
 
     class PhysicsSvg : public ::testing::Test
@@ -88,9 +101,8 @@ TEST_F(PhysicsSvg, TheSimulatedRobotTrackRunsFromTheStartCircleToTheEndCircleThr
     ASSERT_EQ(tracks.size(), 1u) << picture;
     const Points &track = tracks[0];
     ASSERT_EQ(track.size(), STEPS + 1u);
-    const Eigen::Vector2d start =
-        circleCentre(picture, "fill=\"none\" stroke=\"" + std::string(ROBOT_COLOUR));
-    const Eigen::Vector2d end = circleCentre(picture, "fill=\"" + std::string(ROBOT_COLOUR));
+    const Eigen::Vector2d start = circleCentre(picture, "none", ROBOT_COLOUR);
+    const Eigen::Vector2d end = circleCentre(picture, ROBOT_COLOUR, "");
     EXPECT_LT((track.front() - start).norm(), 0.01)
         << track.front().transpose() << " vs " << start.transpose();
     EXPECT_LT((track.back() - end).norm(), 0.01) << track.back().transpose() << " vs " << end.transpose();
