@@ -86,16 +86,23 @@ def build_outputs(build):
     return times
 
 
-def needed_libraries(path, outputs):
-    """The build's shared libraries that path loads, directly or through one another."""
+def direct_libraries(outputs):
+    """For each output, the build's shared libraries it names as NEEDED (one readelf per output)."""
     by_name = {os.path.basename(o): o for o in outputs if o.endswith(".so")}
-    found, todo = set(), [path]
+    direct = {}
+    for output in outputs:
+        dynamic = subprocess.run(["readelf", "-d", output], capture_output=True, text=True).stdout
+        direct[output] = {by_name[n] for n in re.findall(r"\(NEEDED\).*\[(.*)\]", dynamic) if n in by_name}
+    return direct
+
+
+def loaded_libraries(output, direct):
+    """The build's shared libraries that output loads, directly or through one another."""
+    found, todo = set(), [output]
     while todo:
-        dynamic = subprocess.run(["readelf", "-d", todo.pop()], capture_output=True, text=True).stdout
-        for name in re.findall(r"\(NEEDED\).*\[(.*)\]", dynamic):
-            if name in by_name and by_name[name] not in found:
-                found.add(by_name[name])
-                todo.append(by_name[name])
+        for library in direct[todo.pop()] - found:
+            found.add(library)
+            todo.append(library)
     return found
 
 
@@ -121,7 +128,8 @@ def test_plan(build):
     listing = json.loads(subprocess.run(["ctest", "--show-only=json-v1"], cwd=build, capture_output=True,
                                         text=True, check=True).stdout)
     outputs = build_outputs(build)
-    loads = {o: needed_libraries(o, outputs) for o in outputs}
+    direct = direct_libraries(outputs)
+    loads = {o: loaded_libraries(o, direct) for o in outputs}
     plan = []
     for test in listing["tests"]:
         words = list(test.get("command", []))
@@ -136,25 +144,30 @@ def test_plan(build):
     return plan
 
 
-def affected_tests(plan, changed, mutated_file):
-    """The tests that use a changed output or name none, the mutated file's own test first."""
-    own = "test_" + os.path.splitext(os.path.basename(mutated_file))[0]
-    chosen = [name for name, used in plan if not used or used & changed]
-    return sorted(chosen, key=lambda name: name != own)
+def affected_tests(plan, changed):
+    """The tests that use a changed output or name none, in declared order."""
+    return [name for name, used in plan if not used or used & changed]
 
 
-def run_tests(names, build, log, jobs):
-    """Runs the named tests (in that order), stopping at the first failure; 0 when all pass."""
-    if not names:
-        return 0
-    regex = "^(" + "|".join(re.escape(n) for n in names) + ")$"
-    # without its record of earlier run times CTest keeps the given order, unit tests first
+def run_tests(names, build, log, jobs, first=None):
+    """Runs the named tests, the one called first (when among them) before the others, which CTest
+    runs in declared order (without its record of earlier run times: unit tests first); stops at the
+    first failure. 0 when all pass."""
+    order = [[first]] if first in names else []
+    order.append([n for n in names if n != first])
     cost_data = os.path.join(build, "Testing", "Temporary", "CTestCostData.txt")
-    if os.path.exists(cost_data):
-        os.remove(cost_data)
     env = dict(os.environ, GTEST_FAIL_FAST="1")
-    return run(["ctest", "-j", str(jobs), "-R", regex, "-E", EXCLUDED_TESTS, "--stop-on-failure", "--timeout", "600"],
-               build, log, env=env)
+    for group in order:
+        if not group:
+            continue
+        if os.path.exists(cost_data):
+            os.remove(cost_data)
+        regex = "^(" + "|".join(re.escape(n) for n in group) + ")$"
+        status = run(["ctest", "-j", str(jobs), "-R", regex, "-E", EXCLUDED_TESTS, "--stop-on-failure",
+                      "--timeout", "600"], build, log, env=env)
+        if status != 0:
+            return status
+    return 0
 
 
 def run(command, cwd, log, timeout=None, env=None):
@@ -226,8 +239,9 @@ def main():
             else:
                 after = build_outputs(build)
                 changed = {o for o, t in after.items() if before.get(o) != t}
-                tests = affected_tests(plan, changed, mutant["file"])
-                outcome = "killed" if run_tests(tests, build, log, args.jobs) != 0 else "survived"
+                tests = affected_tests(plan, changed)
+                own = "test_" + os.path.splitext(os.path.basename(mutant["file"]))[0]
+                outcome = "killed" if run_tests(tests, build, log, args.jobs, own) != 0 else "survived"
         finally:
             with open(path, "w", encoding="utf-8") as f:
                 f.write(original)
