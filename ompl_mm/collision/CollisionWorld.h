@@ -81,11 +81,6 @@ namespace ompl_mm
         /** Clearance a motion keeps at the fraction it reports as safe (SweepCheck), metres: a
             planner that stops there can leave again without grazing. */
         static constexpr double SAFE_CLEARANCE = 1e-2;
-        /** How deep an object that rests on an obstacle at one end of a motion (is put down on it
-            or lifted off it) may sink into it along the way, metres: more than the rest tolerance
-            (SupportSurface::REST_TOLERANCE), so that a resting object is clear of the obstacle's
-            core. */
-        static constexpr double SUPPORT_SINK = 1e-3;
         /** Most distance rounds of one motion check; a motion that grazes a body so closely that it
             needs more is rejected. */
         static constexpr unsigned int MAX_SWEEP_ROUNDS = 4000;
@@ -108,8 +103,8 @@ namespace ompl_mm
 
         /** Continuous collision check of a motion from one configuration to another, under the
             contact rules of isCollisionFree (a contact allowed at both ends is allowed along the
-            motion; an object put down on an obstacle or lifted off it may touch it, but sinks no
-            deeper than SUPPORT_SINK into it on the way): conservative advancement, each round measuring the
+            motion; an object put down on an obstacle or lifted off it may touch it only where it
+            rests on it): conservative advancement, each round measuring the
            distances of the body pairs that may meet and advancing as far as their sweeps (MotionBounds)
            cannot close them. So a motion it accepts is free at every point, and any part of it is accepted as
            well, to within the distances' precision (DISTANCE_ERROR for convex solids, measured by
@@ -151,16 +146,16 @@ namespace ompl_mm
                 triangles apart, and the hull's distance bounds the triangles' from below, so most
                 queries skip the triangle hierarchy. */
             std::optional<ConvexShape> hull;
-            /** An obstacle's convex shape shrunk by SUPPORT_SINK: what an object that rests on it at
-                one end of a motion may not meet (unless it is no convex solid). */
-            std::optional<ConvexShape> supportCore;
         };
         /** What a pair's distance was measured between. */
         enum class Measure
         {
             Boxes,   ///< their bounding boxes (convex)
             Convex,  ///< their convex shapes or a mesh's hull (convex)
-            Mesh     ///< a mesh's triangles (not convex: no secant bound)
+            Mesh,    ///< a mesh's triangles (not convex: no secant bound)
+            /** an object's distance to the obstacle it rests on at one end of the motion or, where
+                larger, its margin of rest on it (restMargin(); not convex: no secant bound) */
+            Rest
         };
         /** A pair's distance and what it measured. */
         struct Measured
@@ -178,11 +173,18 @@ namespace ompl_mm
             double lastFraction{-1.0};            ///< where the pair's distance was last measured, or -1
             double lastDistance{0.0};             ///< that distance
             Measure lastMeasure{Measure::Boxes};  ///< what lastDistance measured
-            bool againstCore{false};              ///< b is measured by its supportCore
+            bool restsAtAnEnd{false};             ///< object a rests on obstacle b at one end only
         };
         /** The distance of the bodies of a pair, placed: of their convex shapes; of a mesh's hull
-            while that is at least HULL_TRUSTED away; else of the triangles. */
-        static Measured distance(const SweptPair &pair);
+            while that is at least HULL_TRUSTED away; else of the triangles. For an object that
+            rests on the obstacle at one end (SweptPair::restsAtAnEnd), whichever is larger of that
+            and its rest margin: where it rests it may touch. */
+        Measured distance(const SweptPair &pair) const;
+        static Measured shapeDistance(const Body &a, const Body &b);
+        /** Positive where an object whose base is at `base` rests on a surface of the obstacle, and
+            then no more than how far the base may move before it does not; not positive elsewhere
+            (Scene::restMargin() of its surfaces). */
+        double restMargin(const Eigen::Vector3d &base, int obstacle) const;
         /** True when two placed bodies overlap: their boxes, then their hulls, then their shapes. */
         static bool bodiesCollide(const Body &a, const Body &b);
         /** A hull distance from which on a mesh pair is measured by the hulls, metres: below it the

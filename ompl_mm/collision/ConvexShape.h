@@ -31,10 +31,6 @@ namespace ompl_mm
             taken as its triangles (not convex). */
         static std::optional<ConvexShape> of(const Shape &shape, MeshCollision meshes);
 
-        /** The shape shrunk by `by` metres on every side (by < half its least extent), or nullopt
-            for a polytope or when nothing would be left. */
-        std::optional<ConvexShape> shrunk(double by) const;
-
         /** A point of the core farthest along direction (the shape's frame; any direction, the
             zero vector included). */
         Eigen::Vector3d support(const Eigen::Vector3d &direction) const;

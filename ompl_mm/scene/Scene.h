@@ -68,8 +68,9 @@ namespace ompl_mm
         std::string obstacle;  ///< obstacle whose top this is (resting objects may touch it); may be empty
         ompl_core::SourceLocation where;  ///< where the scene defines it, for messages
 
-        /** An object rests on the surface when its base height differs from the surface's by less
-            than this, metres (the tolerance of the original MOPL implementation). */
+        /** An object rests on the surface when its base differs from the surface's height by less
+            than this, metres (the tolerance of the original MOPL implementation), and lies less than
+            this outside its rectangle (so an object on an edge may be lifted straight up). */
         static constexpr double REST_TOLERANCE = 1e-4;
 
         /** True when the world point (x, y), metres, lies in the rectangle, edges included. */
@@ -79,9 +80,16 @@ namespace ompl_mm
         }
 
         /** True when an object whose base centre is at `base` (world frame) rests on this surface. */
-        bool supports(const Eigen::Vector3d &base) const
+        bool supports(const Eigen::Vector3d &base) const { return restMargin(base) > 0.0; }
+
+        /** Positive where the surface supports an object whose base is at `base` (world frame), and
+            then no more than how far the base may move before it does not; not positive elsewhere.
+            It changes by no more than the base moves. */
+        double restMargin(const Eigen::Vector3d &base) const
         {
-            return std::abs(base.z() - height) < REST_TOLERANCE && contains(base.x(), base.y());
+            const double inside =
+                std::min({base.x() - min.x(), max.x() - base.x(), base.y() - min.y(), max.y() - base.y()});
+            return REST_TOLERANCE - std::max(std::abs(base.z() - height), -inside);
         }
     };
 
@@ -254,5 +262,9 @@ namespace ompl_mm
         /** Index of the first surface that supports an object whose base centre is at `base` (world
             frame), or -1 when none does (the object is held). */
         int restingSurface(const Eigen::Vector3d &base) const;
+        /** Positive where restingSurface(base) is `surface`, and then no more than how far the base
+            may move before it is not; not positive elsewhere. It changes by no more than the base
+            moves, so a motion check can bound where an object rests. */
+        double restMargin(const Eigen::Vector3d &base, int surface) const;
     };
 }  // namespace ompl_mm

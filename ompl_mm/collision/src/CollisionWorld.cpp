@@ -94,10 +94,10 @@ namespace ompl_mm
                         scene.robot.where,
                         label + ": " + e.what() + " (meshes=\"exact\" takes its triangles)");
                 }
-                robotBodies_.push_back(
-                    {std::make_unique<fcl::CollisionObjectd>(geometry), s.origin, static_cast<int>(l), label,
-                     isGripperLink(static_cast<int>(l)), s.shape.boundingRadius(),
-                     ConvexShape::of(s.shape, scene.robot.meshCollision), std::nullopt, std::nullopt});
+                robotBodies_.push_back({std::make_unique<fcl::CollisionObjectd>(geometry), s.origin,
+                                        static_cast<int>(l), label, isGripperLink(static_cast<int>(l)),
+                                        s.shape.boundingRadius(),
+                                        ConvexShape::of(s.shape, scene.robot.meshCollision), std::nullopt});
                 if (!robotBodies_.back().convex && s.shape.kind == Shape::Kind::Mesh)
                     try
                     {
@@ -114,10 +114,10 @@ namespace ompl_mm
             const Shape &shape = scene.objects[i].shape;
             Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
             offset.translation().z() = 0.5 * shape.height();  // the object frame is at its base
-            objectBodies_.push_back(
-                {std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(shape)), offset,
-                 static_cast<int>(i), "object '" + scene.objects[i].name + "'", false, shape.boundingRadius(),
-                 ConvexShape::of(shape, MeshCollision::Exact), std::nullopt, std::nullopt});
+            objectBodies_.push_back({std::make_unique<fcl::CollisionObjectd>(makeCollisionGeometry(shape)),
+                                     offset, static_cast<int>(i), "object '" + scene.objects[i].name + "'",
+                                     false, shape.boundingRadius(),
+                                     ConvexShape::of(shape, MeshCollision::Exact), std::nullopt});
         }
 
         obstacleTree_ = std::make_unique<fcl::DynamicAABBTreeCollisionManagerd>();
@@ -131,10 +131,7 @@ namespace ompl_mm
                 false,
                 scene.obstacles[i].shape.boundingRadius(),
                 ConvexShape::of(scene.obstacles[i].shape, MeshCollision::Exact),
-                std::nullopt,
                 std::nullopt};
-            if (body.convex)
-                body.supportCore = body.convex->shrunk(SUPPORT_SINK);
             place(*body.object, scene.obstacles[i].pose);
             body.object->setUserData(reinterpret_cast<void *>(i + 1));  // the obstacle's index + 1
             obstacleTree_->registerObject(body.object.get());
@@ -235,20 +232,37 @@ namespace ompl_mm
 
     CollisionWorld::~CollisionWorld() = default;
 
-    CollisionWorld::Measured CollisionWorld::distance(const SweptPair &pair)
+    CollisionWorld::Measured CollisionWorld::distance(const SweptPair &pair) const
     {
-        const Body &a = *pair.a, &b = *pair.b;
-        const std::optional<ConvexShape> &shapeB = pair.againstCore ? b.supportCore : b.convex;
+        const Measured shapes = shapeDistance(*pair.a, *pair.b);
+        if (!pair.restsAtAnEnd)
+            return shapes;
+        const Eigen::Isometry3d &frame = pair.a->object->getTransform();
+        const Eigen::Vector3d base = frame.translation() - frame.linear() * pair.a->offset.translation();
+        return {std::max(shapes.distance, restMargin(base, pair.b->owner)), Measure::Rest};
+    }
+
+    double CollisionWorld::restMargin(const Eigen::Vector3d &base, int obstacle) const
+    {
+        double margin = -std::numeric_limits<double>::infinity();
+        for (std::size_t s = 0; s < surfaceObstacle_.size(); ++s)
+            if (surfaceObstacle_[s] == obstacle)
+                margin = std::max(margin, model_->scene().restMargin(base, static_cast<int>(s)));
+        return margin;
+    }
+
+    CollisionWorld::Measured CollisionWorld::shapeDistance(const Body &a, const Body &b)
+    {
         // convex solids by our GJK, whose lower bound is what conservative advancement needs
-        if (a.convex && shapeB)
-            return {convexDistance(*a.convex, a.object->getTransform(), *shapeB, b.object->getTransform(),
+        if (a.convex && b.convex)
+            return {convexDistance(*a.convex, a.object->getTransform(), *b.convex, b.object->getTransform(),
                                    DISTANCE_ERROR),
                     Measure::Convex};
         // a mesh by its hull while that is far: the hull holds the mesh, so its distance is a lower
         // bound of the triangles'
         const std::optional<ConvexShape> &boundA = a.convex ? a.convex : a.hull;
-        const std::optional<ConvexShape> &boundB = shapeB ? shapeB : b.hull;
-        if (boundA && boundB && !pair.againstCore)
+        const std::optional<ConvexShape> &boundB = b.convex ? b.convex : b.hull;
+        if (boundA && boundB)
         {
             const double hulls = convexDistance(*boundA, a.object->getTransform(), *boundB,
                                                 b.object->getTransform(), DISTANCE_ERROR);
@@ -431,15 +445,13 @@ namespace ompl_mm
             for (const Body &obstacle : obstacleBodies_)
             {
                 // an object that rests on the obstacle at both ends slides on its (planar, convex)
-                // surface; one put down on it or lifted off it may touch it but not sink into it
-                // (an obstacle without a convex core to measure allows its contacts)
+                // surface; one put down on it or lifted off it may touch it where it rests
                 const bool restsFrom = restsOn(from, static_cast<int>(i), obstacle.owner);
                 const bool restsTo = restsOn(to, static_cast<int>(i), obstacle.owner);
-                const bool restsAtOneEnd = restsFrom != restsTo;
-                if ((restsFrom && restsTo) || (restsAtOneEnd && !obstacle.supportCore))
+                if (restsFrom && restsTo)
                     continue;
                 if (add(objectBodies_[i], obstacle, objectSweeps[i], still))
-                    pairs.back().againstCore = restsAtOneEnd;
+                    pairs.back().restsAtAnEnd = restsFrom != restsTo;
             }
             for (std::size_t j = i + 1; j < objectSweeps.size(); ++j)
                 add(objectBodies_[i], objectBodies_[j], objectSweeps[i], objectSweeps[j]);
@@ -485,8 +497,9 @@ namespace ompl_mm
                 // boxes) is convex along the motion, so the line through its last two measures,
                 // allowing for their error, bounds it from below from here on
                 double closing = pair.rate;
+                const bool convex = measured.measure == Measure::Boxes || measured.measure == Measure::Convex;
                 if (pair.translates && pair.lastFraction >= 0.0 && pair.lastMeasure == measured.measure &&
-                    measured.measure != Measure::Mesh)
+                    convex)
                     closing = std::min(
                         closing, (pair.lastDistance - d + 2.0 * DISTANCE_ERROR) / (t - pair.lastFraction));
                 if (closing <= 0.0)

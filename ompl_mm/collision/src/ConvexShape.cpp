@@ -1,7 +1,6 @@
 #include "ompl_mm/collision/ConvexShape.h"
 
 #include "ompl_mm/scene/ConvexHull.h"
-#include "ompl_mm/scene/ConvexHull.h"
 #include "ompl_mm/scene/TriangleMesh.h"
 
 #include <cmath>
@@ -55,24 +54,6 @@ namespace ompl_mm
                     polytope.hull_ = hull;
                     return polytope;
                 }
-                return std::nullopt;
-        }
-        return std::nullopt;
-    }
-
-    std::optional<ConvexShape> ConvexShape::shrunk(double by) const
-    {
-        ConvexShape shape = *this;
-        switch (kind_)
-        {
-            case Kind::Point:
-                shape.margin_ -= by;
-                return shape.margin_ > 0.0 ? std::optional(shape) : std::nullopt;
-            case Kind::Box:
-            case Kind::Cylinder:
-                shape.halfSize_.array() -= by;
-                return shape.halfSize_.minCoeff() > 0.0 ? std::optional(shape) : std::nullopt;
-            case Kind::Polytope:
                 return std::nullopt;
         }
         return std::nullopt;

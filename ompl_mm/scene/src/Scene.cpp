@@ -80,6 +80,15 @@ namespace ompl_mm
         return -1;
     }
 
+    double Scene::restMargin(const Eigen::Vector3d &base, int surface) const
+    {
+        // the surface supports the base and none before it does
+        double margin = surfaces[surface].restMargin(base);
+        for (int s = 0; s < surface; ++s)
+            margin = std::min(margin, -surfaces[s].restMargin(base));
+        return margin;
+    }
+
     void Scene::setPushModel(const std::string &model)
     {
         if (model != "kinematic" && model != "physics")

@@ -406,3 +406,40 @@ TEST_F(PutDown, AnObjectPutOnATableThroughItsTopCollides)
     EXPECT_FALSE(putDown(under, onTop).free);
     EXPECT_FALSE(putDown(onTop, under).free);
 }
+
+TEST_F(PutDown, AnObjectSlidOntoATableSunkBelowItsTopCollides)
+{
+    // from beside table1's top (x up to 0.77), 0.5 mm below its surface, onto it: half way it is
+    // off the surface's rectangle (x up to 0.75) and 0.25 mm too low to rest, yet inside the top
+    const double surface = 0.43;
+    const Eigen::Vector3d beside(0.85, 0.0, surface - 5e-4), onTop(0.7, 0.0, surface);
+    ASSERT_GE(scene_.restingSurface(onTop), 0);
+    const Eigen::Vector3d halfWay = 0.5 * (beside + onTop);
+    ASSERT_LT(scene_.restingSurface(halfWay), 0);
+    const std::vector<double> zero(7, 0.0);
+    EXPECT_EQ(world_.contactAmong(zero.data(), {ObjectPose{beside, 0.0}, std::nullopt, std::nullopt}), "");
+    EXPECT_EQ(world_.contactAmong(zero.data(), {ObjectPose{halfWay, 0.0}, std::nullopt, std::nullopt}),
+              "object 'cyl1' and obstacle 'table1_top'");
+    EXPECT_FALSE(putDown(beside, onTop).free);
+    EXPECT_FALSE(putDown(onTop, beside).free);
+}
+
+TEST_F(PutDown, AnObjectLoweredOntoATableTouchesItOnlyWhereItRests)
+{
+    // straight down onto table1 but ending a little inside its top, as far as the rest tolerance
+    // allows: free, the object resting wherever it touches
+    const double sunk = 0.43 - 0.5 * SupportSurface::REST_TOLERANCE;
+    const Eigen::Vector3d above(0.5, 0.0, 0.5), onTop(0.5, 0.0, sunk);
+    ASSERT_GE(scene_.restingSurface(onTop), 0);
+    EXPECT_TRUE(putDown(above, onTop).free);
+    EXPECT_TRUE(putDown(onTop, above).free);
+}
+
+TEST_F(PutDown, AnObjectOnTheEdgeOfATableIsLiftedStraightUp)
+{
+    // table1's surface ends at x 0.75 (its top at 0.77): an object may stand on the edge
+    const Eigen::Vector3d onEdge(0.75, 0.25, 0.43), above(0.75, 0.25, 0.5);
+    ASSERT_GE(scene_.restingSurface(onEdge), 0);
+    EXPECT_TRUE(putDown(onEdge, above).free);
+    EXPECT_TRUE(putDown(above, onEdge).free);
+}
