@@ -216,6 +216,9 @@ namespace ompl_mm
             collides or ptc is true (then not reached). */
         Extension walk(ManipulationTree &tree, int near, const Trajectory &trajectory,
                        const ompl::base::PlannerTerminationCondition &ptc);
+        /** True when a primitive explains the motion between walk states `from` and `to` in the
+            path's direction: from to to in the start tree, to to from in the goal tree. */
+        bool isMotion(const ompl::base::State *from, const ompl::base::State *to, bool forward) const;
         /** True when the sample defines every object and state has each where the sample does. */
         bool keepsSampleObjects(const PartialState &sample, const ompl::base::State *state) const;
         /** Extends tree from vertex from towards the object pushed to a random place within the

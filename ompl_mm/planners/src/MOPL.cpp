@@ -392,7 +392,14 @@ namespace ompl_mm
                 if (k == pieces)
                     space_->copyState(to, end);
                 else
+                {
                     space_->interpolate(start, end, k * vertexStep_ / length, to);
+                    // a vertex on the way keeps the segment's mode (a carried object passing
+                    // within the rest tolerance of a surface would seem put down there): else the
+                    // piece goes on to the next one
+                    if (!isMotion(from, to, forward) || !isMotion(to, end, forward))
+                        continue;
+                }
                 // a check stopped by ptc reports nothing of the piece free: the walk ends here
                 const CollisionWorld::SweepCheck check = motions_->checkSweep(from, to, ptc);
                 if (!check.interrupted)
@@ -406,7 +413,7 @@ namespace ompl_mm
                     extension.blockingObject = check.blockingObject;
                     // keep the way to a contact only when it is worth a vertex: a connect step
                     space_->interpolate(from, to, check.safeFraction, to);
-                    if (segmentLength(from, to) < connectStep_)
+                    if (segmentLength(from, to) < connectStep_ || !isMotion(from, to, forward))
                         break;
                 }
                 extension.last = parent =
@@ -419,6 +426,11 @@ namespace ompl_mm
         space_->freeState(from);
         space_->freeState(to);
         return extension;
+    }
+
+    bool MOPL::isMotion(const ob::State *from, const ob::State *to, bool forward) const
+    {
+        return forward ? motions_->explain(from, to).has_value() : motions_->explain(to, from).has_value();
     }
 
     PrimitiveKind MOPL::blamedKind(const Trajectory &trajectory, std::size_t segment)
