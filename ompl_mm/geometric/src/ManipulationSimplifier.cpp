@@ -1,4 +1,5 @@
 #include "ompl_mm/geometric/ManipulationSimplifier.h"
+#include "ompl_mm/geometric/CloseStateCollapse.h"
 
 #include "ompl_core/compat/OmplVersions.h"
 #include "ompl_mm/base/StepTermination.h"
@@ -373,8 +374,10 @@ namespace ompl_mm
             simplifier.smoothBSpline(shorter, 3, shorter.length() / 100.0);
         if (!ptc)
             simplifier.reduceVertices(shorter);
+        // OMPL's collapseCloseVertices() as a step of our own that stops at ptc (OMPL's can run
+        // for a tenth of a second past it on a long path)
         if (!ptc)
-            simplifier.collapseCloseVertices(shorter);
+            collapseCloseStates(shorter, ptc);
         // a check stopped by ptc fails, so the copy is kept only when all of it was checked
         if (!ptc && shorter.check() && shorter.toolPathLength() < path.toolPathLength())
             path = shorter;
