@@ -74,23 +74,15 @@ namespace ompl_mm
         static constexpr double REST_TOLERANCE = 1e-4;
 
         /** True when the world point (x, y), metres, lies in the rectangle, edges included. */
-        bool contains(double x, double y) const
-        {
-            return x >= min.x() && x <= max.x() && y >= min.y() && y <= max.y();
-        }
+        bool contains(double x, double y) const;
 
         /** True when an object whose base centre is at `base` (world frame) rests on this surface. */
-        bool supports(const Eigen::Vector3d &base) const { return restMargin(base) > 0.0; }
+        bool supports(const Eigen::Vector3d &base) const;
 
         /** Positive where the surface supports an object whose base is at `base` (world frame), and
             then no more than how far the base may move before it does not; not positive elsewhere.
             It changes by no more than the base moves. */
-        double restMargin(const Eigen::Vector3d &base) const
-        {
-            const double inside =
-                std::min({base.x() - min.x(), max.x() - base.x(), base.y() - min.y(), max.y() - base.y()});
-            return REST_TOLERANCE - std::max(std::abs(base.z() - height), -inside);
-        }
+        double restMargin(const Eigen::Vector3d &base) const;
     };
 
     /** A box in which objects may be sampled "in the air" (held by the robot). */

@@ -384,8 +384,10 @@ namespace ompl_mm
             // than a connect step: shorter pieces would grow the trees (and the nearest-neighbour
             // search) with no gain in reach
             const double length = segmentLength(start, end);
-            const unsigned int pieces =
-                std::max(1u, static_cast<unsigned int>(std::ceil((length - connectStep_) / vertexStep_)));
+            // (a segment shorter than the connect step is one piece; the bound is taken before the
+            // cast, since a negative double has no unsigned value)
+            const auto pieces =
+                static_cast<unsigned int>(std::max(1.0, std::ceil((length - connectStep_) / vertexStep_)));
             space_->copyState(from, start);
             for (unsigned int k = 1; k <= pieces && !blocked; ++k)
             {

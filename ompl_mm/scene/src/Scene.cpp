@@ -4,6 +4,7 @@
 
 #include <ompl/util/Exception.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ompl_mm
@@ -62,6 +63,23 @@ namespace ompl_mm
                 return mesh->boundingRadius;
         }
         throwInvalidKind("Shape::boundingRadius", kind);
+    }
+
+    bool SupportSurface::contains(double x, double y) const
+    {
+        return x >= min.x() && x <= max.x() && y >= min.y() && y <= max.y();
+    }
+
+    bool SupportSurface::supports(const Eigen::Vector3d &base) const
+    {
+        return restMargin(base) > 0.0;
+    }
+
+    double SupportSurface::restMargin(const Eigen::Vector3d &base) const
+    {
+        const double inside =
+            std::min({base.x() - min.x(), max.x() - base.x(), base.y() - min.y(), max.y() - base.y()});
+        return REST_TOLERANCE - std::max(std::abs(base.z() - height), -inside);
     }
 
     int Scene::objectIndex(const std::string &name) const

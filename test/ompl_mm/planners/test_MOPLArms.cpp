@@ -57,15 +57,17 @@ namespace
                space.objectPosition(state, object);
     }
 
-    /** Index of the surface of scene the point rests on (own rule: height within 1e-4, inside the
-        rectangle), or -1. */
+    /** Index of the surface of scene the point rests on (own rule, as docs/scene-format.md has it:
+        height within 1e-4, inside the rectangle or less than 1e-4 outside it), or -1. */
     int surfaceUnder(const Scene &scene, const Eigen::Vector3d &p)
     {
+        constexpr double tolerance = 1e-4;
         for (std::size_t s = 0; s < scene.surfaces.size(); ++s)
         {
             const SupportSurface &surface = scene.surfaces[s];
-            if (std::abs(p.z() - surface.height) < 1e-4 && p.x() >= surface.min.x() &&
-                p.x() <= surface.max.x() && p.y() >= surface.min.y() && p.y() <= surface.max.y())
+            if (std::abs(p.z() - surface.height) < tolerance && p.x() > surface.min.x() - tolerance &&
+                p.x() < surface.max.x() + tolerance && p.y() > surface.min.y() - tolerance &&
+                p.y() < surface.max.y() + tolerance)
                 return static_cast<int>(s);
         }
         return -1;
