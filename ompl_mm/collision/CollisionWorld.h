@@ -154,7 +154,7 @@ namespace ompl_mm
             Convex,  ///< their convex shapes or a mesh's hull (convex)
             Mesh,    ///< a mesh's triangles (not convex: no secant bound)
             /** an object's distance to the obstacle it rests on at one end of the motion or, where
-                larger, its margin of rest on it (restMargin(); not convex: no secant bound) */
+                larger, its margin of rest on it (Scene::restMargin(); not convex: no secant bound) */
             Rest
         };
         /** A pair's distance and what it measured. */
@@ -178,13 +178,11 @@ namespace ompl_mm
         /** The distance of the bodies of a pair, placed: of their convex shapes; of a mesh's hull
             while that is at least HULL_TRUSTED away; else of the triangles. For an object that
             rests on the obstacle at one end (SweptPair::restsAtAnEnd), whichever is larger of that
-            and its rest margin: where it rests it may touch. */
+            and its rest margin on the obstacle's surfaces (Scene::restMargin()): where it rests it
+            may touch. */
         Measured distance(const SweptPair &pair) const;
+        /** The distance of two placed bodies' shapes, as distance() measures a pair. */
         static Measured shapeDistance(const Body &a, const Body &b);
-        /** Positive where an object whose base is at `base` rests on a surface of the obstacle, and
-            then no more than how far the base may move before it does not; not positive elsewhere
-            (Scene::restMargin() of its surfaces). */
-        double restMargin(const Eigen::Vector3d &base, int obstacle) const;
         /** True when two placed bodies overlap: their boxes, then their hulls, then their shapes. */
         static bool bodiesCollide(const Body &a, const Body &b);
         /** A hull distance from which on a mesh pair is measured by the hulls, metres: below it the

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -254,9 +255,10 @@ namespace ompl_mm
         /** Index of the first surface that supports an object whose base centre is at `base` (world
             frame), or -1 when none does (the object is held). */
         int restingSurface(const Eigen::Vector3d &base) const;
-        /** Positive where restingSurface(base) is `surface`, and then no more than how far the base
-            may move before it is not; not positive elsewhere. It changes by no more than the base
-            moves, so a motion check can bound where an object rests. */
-        double restMargin(const Eigen::Vector3d &base, int surface) const;
+        /** Positive where restingSurface(base) is a surface that `counts` (given its index), and
+            then no more than how far the base may move before it is not; not positive elsewhere.
+            It changes by no more than the base moves, so a motion check can bound where an object
+            rests. */
+        double restMargin(const Eigen::Vector3d &base, const std::function<bool(int)> &counts) const;
     };
 }  // namespace ompl_mm

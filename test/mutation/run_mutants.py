@@ -98,11 +98,11 @@ def direct_libraries(outputs):
 
 def loaded_libraries(output, direct):
     """The build's shared libraries that output loads, directly or through one another."""
-    found, todo = set(), [output]
-    while todo:
-        for library in direct[todo.pop()] - found:
+    found, unvisited = set(), [output]
+    while unvisited:
+        for library in direct[unvisited.pop()] - found:
             found.add(library)
-            todo.append(library)
+            unvisited.append(library)
     return found
 
 

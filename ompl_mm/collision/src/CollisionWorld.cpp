@@ -239,16 +239,9 @@ namespace ompl_mm
             return shapes;
         const Eigen::Isometry3d &frame = pair.a->object->getTransform();
         const Eigen::Vector3d base = frame.translation() - frame.linear() * pair.a->offset.translation();
-        return {std::max(shapes.distance, restMargin(base, pair.b->owner)), Measure::Rest};
-    }
-
-    double CollisionWorld::restMargin(const Eigen::Vector3d &base, int obstacle) const
-    {
-        double margin = -std::numeric_limits<double>::infinity();
-        for (std::size_t s = 0; s < surfaceObstacle_.size(); ++s)
-            if (surfaceObstacle_[s] == obstacle)
-                margin = std::max(margin, model_->scene().restMargin(base, static_cast<int>(s)));
-        return margin;
+        const double rests = model_->scene().restMargin(
+            base, [&](int surface) { return surfaceObstacle_[surface] == pair.b->owner; });
+        return {std::max(shapes.distance, rests), Measure::Rest};
     }
 
     CollisionWorld::Measured CollisionWorld::shapeDistance(const Body &a, const Body &b)

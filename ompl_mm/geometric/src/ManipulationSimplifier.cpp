@@ -1,8 +1,8 @@
 #include "ompl_mm/geometric/ManipulationSimplifier.h"
-#include "ompl_mm/geometric/CloseStateCollapse.h"
 
 #include "ompl_core/compat/OmplVersions.h"
 #include "ompl_mm/base/StepTermination.h"
+#include "ompl_mm/geometric/CloseStateCollapse.h"
 
 #include <ompl/geometric/PathSimplifier.h>
 #include <ompl/util/Exception.h>

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ompl_mm
 {
@@ -98,12 +99,18 @@ namespace ompl_mm
         return -1;
     }
 
-    double Scene::restMargin(const Eigen::Vector3d &base, int surface) const
+    double Scene::restMargin(const Eigen::Vector3d &base, const std::function<bool(int)> &counts) const
     {
-        // the surface supports the base and none before it does
-        double margin = surfaces[surface].restMargin(base);
-        for (int s = 0; s < surface; ++s)
-            margin = std::min(margin, -surfaces[s].restMargin(base));
+        // some counted surface supports the base and no surface before it does
+        double margin = -std::numeric_limits<double>::infinity();
+        double noneBefore = std::numeric_limits<double>::infinity();
+        for (std::size_t s = 0; s < surfaces.size(); ++s)
+        {
+            const double supports = surfaces[s].restMargin(base);
+            if (counts(static_cast<int>(s)))
+                margin = std::max(margin, std::min(supports, noneBefore));
+            noneBefore = std::min(noneBefore, -supports);
+        }
         return margin;
     }
 

@@ -48,7 +48,8 @@ TEST(SceneRest, TheMarginIsPositiveExactlyWhereTheObjectRestsThereAndNoSteeperTh
         const Eigen::Vector3d near = base + Eigen::Vector3d(nudge(random), nudge(random), nudge(random));
         for (int surface = 0; surface < 2; ++surface)
         {
-            const double margin = scene.restMargin(base, surface);
+            const auto isSurface = [surface](int s) { return s == surface; };
+            const double margin = scene.restMargin(base, isSurface);
             if (margin > 0.0)
             {
                 EXPECT_EQ(scene.restingSurface(base), surface) << base.transpose();
@@ -58,7 +59,7 @@ TEST(SceneRest, TheMarginIsPositiveExactlyWhereTheObjectRestsThereAndNoSteeperTh
             {
                 EXPECT_NE(scene.restingSurface(base), surface) << base.transpose();
             }
-            EXPECT_LE(std::abs(scene.restMargin(near, surface) - margin), (near - base).norm() + 1e-12)
+            EXPECT_LE(std::abs(scene.restMargin(near, isSurface) - margin), (near - base).norm() + 1e-12)
                 << base.transpose() << " to " << near.transpose();
         }
     }
