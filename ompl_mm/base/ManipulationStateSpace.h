@@ -95,6 +95,19 @@ namespace ompl_mm
             rest interpolate per subspace. state may be from or to. */
         void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t,
                          ompl::base::State *state) const override;
+        /** What interpolate() needs of a motion's ends, for a motion interpolated many times (as
+            a continuous collision check does): computed once by motionEnds(). */
+        struct MotionEnds
+        {
+            bool carries{false};         ///< some object is carried at either end
+            Eigen::Isometry3d toolFrom;  ///< the tool frame at `from`, when carries
+            Eigen::Isometry3d toolTo;    ///< the tool frame at `to`, when carries
+        };
+        /** The ends of the motion from `from` to `to`, for interpolate(from, to, t, state, ends). */
+        MotionEnds motionEnds(const ompl::base::State *from, const ompl::base::State *to) const;
+        /** interpolate() along a motion whose ends are known (motionEnds(from, to)). */
+        void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t,
+                         ompl::base::State *state, const MotionEnds &ends) const;
         /** OMPL's hook: a ManipulationStateSampler (near samples move only the robot). */
         ompl::base::StateSamplerPtr allocDefaultStateSampler() const override;
         /** OMPL's hook: prints the joints and each object's name, position and yaw on one line. */

@@ -174,6 +174,10 @@ namespace ompl_mm
             double lastDistance{0.0};             ///< that distance
             Measure lastMeasure{Measure::Boxes};  ///< what lastDistance measured
             bool restsAtAnEnd{false};             ///< object a rests on obstacle b at one end only
+            /** Where the pair must be measured again: up to there its last measure keeps it apart */
+            double due{0.0};
+            /** Up to where its last measure keeps it SAFE_CLEARANCE apart, or -1 */
+            double clearUntil{-1.0};
         };
         /** The distance of the bodies of a pair, placed: of their convex shapes; of a mesh's hull
             while that is at least HULL_TRUSTED away; else of the triangles. For an object that
@@ -188,6 +192,18 @@ namespace ompl_mm
         /** A hull distance from which on a mesh pair is measured by the hulls, metres: below it the
             triangles decide, so contacts and near misses are the triangles' own. */
         static constexpr double HULL_TRUSTED = 2.0 * SAFE_CLEARANCE;
+        /** What measuring a pair along a motion found. */
+        enum class Progress
+        {
+            Apart,     ///< the pair cannot meet for the rest of the motion
+            Touching,  ///< closer than MIN_CLEARANCE: the motion is blocked
+            Due        ///< apart: SweptPair::due tells where to measure it again
+        };
+        /** Measures a pair placed at fraction t of a motion (conservative advancement): whether it
+            touches, cannot meet any more, or else up to where it stays apart (its due, keeping
+            SAFE_CLEARANCE short of a contact ahead, or half of MIN_CLEARANCE when closer) and
+            SAFE_CLEARANCE apart (its clearUntil). */
+        Progress advance(SweptPair &pair, double t) const;
         /** The object of a pair in contact that SweepCheck::blockingObject names, or -1. */
         int blockingObject(const SweptPair &pair) const;
 

@@ -320,30 +320,42 @@ namespace ompl_mm
         return {carried.translation(), std::atan2(xAxis.y(), xAxis.x())};
     }
 
+    ManipulationStateSpace::MotionEnds ManipulationStateSpace::motionEnds(const ob::State *from,
+                                                                          const ob::State *to) const
+    {
+        MotionEnds ends;
+        for (unsigned int i = 0; i < objectCount() && !ends.carries; ++i)
+            ends.carries = isCarried(from, to, i);
+        if (ends.carries)
+        {
+            ends.toolFrom = model_->toolFrame(robotValues(from));
+            ends.toolTo = model_->toolFrame(robotValues(to));
+        }
+        return ends;
+    }
+
     void ManipulationStateSpace::interpolate(const ob::State *from, const ob::State *to, double t,
                                              ob::State *state) const
     {
-        // read everything carrying needs before writing: state may be from or to
-        bool carries = false;
-        for (unsigned int i = 0; i < objectCount() && !carries; ++i)
-            carries = isCarried(from, to, i);
-        Eigen::Isometry3d toolFrom, toolTo;
-        if (carries)
-        {
-            toolFrom = model_->toolFrame(robotValues(from));
-            toolTo = model_->toolFrame(robotValues(to));
-        }
+        // the ends are read before state is written: state may be from or to
+        interpolate(from, to, t, state, motionEnds(from, to));
+    }
+
+    void ManipulationStateSpace::interpolate(const ob::State *from, const ob::State *to, double t,
+                                             ob::State *state, const MotionEnds &ends) const
+    {
         getSubspace(0)->interpolate(from->as<StateType>()->components[0], to->as<StateType>()->components[0],
                                     t, state->as<StateType>()->components[0]);
         const Eigen::Isometry3d toolAt =
-            carries ? model_->toolFrame(robotValues(state)) : Eigen::Isometry3d();
+            ends.carries ? model_->toolFrame(robotValues(state)) : Eigen::Isometry3d();
         for (unsigned int i = 0; i < objectCount(); ++i)
         {
-            if (carries && isCarried(from, to, i))
+            // object i's pose is read before it is written (state may be from or to)
+            if (ends.carries && isCarried(from, to, i))
             {
                 setObjectPose(state, i,
-                              carriedPose(objectPose(from, i), objectPose(to, i), toolFrom, toolTo, toolAt, t,
-                                          model_->scene().objects[i].shape.turnsFreely()));
+                              carriedPose(objectPose(from, i), objectPose(to, i), ends.toolFrom, ends.toolTo,
+                                          toolAt, t, model_->scene().objects[i].shape.turnsFreely()));
                 continue;
             }
             for (unsigned int index : {positionIndex(i), yawIndex(i)})

@@ -451,6 +451,41 @@ namespace ompl_mm
         }
     }
 
+    CollisionWorld::Progress CollisionWorld::advance(SweptPair &pair, double t) const
+    {
+        const double remaining = (1.0 - t) * pair.rate;
+        // bounding boxes first: their gap is a lower bound on the distance; a pair that cannot come
+        // near for the rest of the way is done
+        const double apart = pair.a->object->getAABB().distance(pair.b->object->getAABB());
+        if (apart > remaining + SAFE_CLEARANCE)
+            return Progress::Apart;
+        const bool exact = apart <= 2.0 * SAFE_CLEARANCE;
+        const Measured measured = exact ? distance(pair) : Measured{apart, Measure::Boxes};
+        const double d = measured.distance;
+        if (d < MIN_CLEARANCE)
+            return Progress::Touching;
+        // stop a safe clearance short of a contact ahead, then close in as far as keeps half the
+        // least clearance (so any part of a motion it accepts passes too)
+        const double keep = d > 2.0 * SAFE_CLEARANCE ? SAFE_CLEARANCE : 0.5 * MIN_CLEARANCE;
+        // convex bodies in relative translation: the distance (of the shapes, or of their boxes) is
+        // convex along the motion, so the line through its last two measures, allowing for their
+        // error, bounds it from below from here on
+        double closing = pair.rate;
+        const bool convex = measured.measure == Measure::Boxes || measured.measure == Measure::Convex;
+        if (pair.translates && pair.lastFraction >= 0.0 && pair.lastMeasure == measured.measure && convex)
+            closing =
+                std::min(closing, (pair.lastDistance - d + 2.0 * DISTANCE_ERROR) / (t - pair.lastFraction));
+        if (closing <= 0.0)
+            return Progress::Apart;  // only moving apart from here
+        pair.due = t + (d - DISTANCE_ERROR - keep) / closing;
+        pair.clearUntil =
+            d >= SAFE_CLEARANCE ? t + std::max(0.0, (d - DISTANCE_ERROR - SAFE_CLEARANCE) / closing) : -1.0;
+        pair.lastFraction = t;
+        pair.lastDistance = d;
+        pair.lastMeasure = measured.measure;
+        return Progress::Due;
+    }
+
     CollisionWorld::SweepCheck CollisionWorld::checkSweep(
         const Configuration &from, const Configuration &to,
         const std::function<Configuration(double)> &configurationAt, const std::function<bool()> &stop) const
@@ -462,58 +497,41 @@ namespace ompl_mm
         placeBodies(from);
         for (unsigned int round = 0; round < MAX_SWEEP_ROUNDS; ++round)
         {
-            double step = std::numeric_limits<double>::infinity();
-            bool clear = true;
-            for (std::size_t k = 0; k < pairs.size();)
-            {
-                SweptPair &pair = pairs[k];
-                const double remaining = (1.0 - t) * pair.rate;
-                // bounding boxes first: their gap is a lower bound on the distance; a pair that
-                // cannot come near for the rest of the way is done
-                const double apart = pair.a->object->getAABB().distance(pair.b->object->getAABB());
-                if (apart > remaining + SAFE_CLEARANCE)
+            // the pairs due here first; then those whose last measure would end the next step
+            // before the fresh measures do, so that a step is never shorter than with every pair
+            // measured, and a pair far from contact is measured only every few steps
+            double next = std::numeric_limits<double>::infinity();
+            for (const bool due : {true, false})
+                for (std::size_t k = 0; k < pairs.size();)
                 {
-                    pairs[k] = pairs.back();
-                    pairs.pop_back();
-                    continue;
+                    SweptPair &pair = pairs[k];
+                    if (due ? pair.due > t : pair.due >= next)
+                    {
+                        ++k;
+                        continue;
+                    }
+                    const Progress progress = advance(pair, t);
+                    if (progress == Progress::Touching)
+                        return {false, safe, blockingObject(pair), {pair.a->label, pair.b->label}};
+                    if (progress == Progress::Apart)
+                    {
+                        pairs[k] = pairs.back();
+                        pairs.pop_back();
+                        continue;
+                    }
+                    next = std::min(next, pair.due);
+                    ++k;
                 }
-                const bool exact = apart <= 2.0 * SAFE_CLEARANCE;
-                const Measured measured = exact ? distance(pair) : Measured{apart, Measure::Boxes};
-                const double d = measured.distance;
-                if (d < MIN_CLEARANCE)
-                    return {false, safe, blockingObject(pair), {pair.a->label, pair.b->label}};
-                clear = clear && d >= SAFE_CLEARANCE;
-                // stop a safe clearance short of a contact ahead, then close in as far as keeps half
-                // the least clearance (so any part of a motion it accepts passes too)
-                const double keep = d > 2.0 * SAFE_CLEARANCE ? SAFE_CLEARANCE : 0.5 * MIN_CLEARANCE;
-                // convex bodies in relative translation: the distance (of the shapes, or of their
-                // boxes) is convex along the motion, so the line through its last two measures,
-                // allowing for their error, bounds it from below from here on
-                double closing = pair.rate;
-                const bool convex = measured.measure == Measure::Boxes || measured.measure == Measure::Convex;
-                if (pair.translates && pair.lastFraction >= 0.0 && pair.lastMeasure == measured.measure &&
-                    convex)
-                    closing = std::min(
-                        closing, (pair.lastDistance - d + 2.0 * DISTANCE_ERROR) / (t - pair.lastFraction));
-                if (closing <= 0.0)
-                {
-                    pairs[k] = pairs.back();  // only moving apart from here
-                    pairs.pop_back();
-                    continue;
-                }
-                step = std::min(step, (d - DISTANCE_ERROR - keep) / closing);
-                pair.lastFraction = t;
-                pair.lastDistance = d;
-                pair.lastMeasure = measured.measure;
-                ++k;
-            }
-            if (clear)
+            for (const SweptPair &pair : pairs)
+                next = std::min(next, pair.due);
+            if (std::all_of(pairs.begin(), pairs.end(),
+                            [t](const SweptPair &pair) { return t <= pair.clearUntil; }))
                 safe = t;
-            if (pairs.empty() || t + step >= 1.0)
+            if (pairs.empty() || next >= 1.0)
                 return {true, 1.0};
             if (stop && stop())
                 return {false, safe, -1, {}, true};
-            t += step;
+            t = next;
             placeBodies(configurationAt(t));
         }
         return {false, safe};

@@ -75,11 +75,12 @@ namespace ompl_mm
         // stopped: nothing of the motion is shown free
         if (stopped(ptc))
             return {false, 0.0, -1, {}, true};
+        const ManipulationStateSpace::MotionEnds ends = space_->motionEnds(s1, s2);
         return world_.checkSweep(
             from_.read(*space_, s1), to_.read(*space_, s2),
             [&](double t)
             {
-                space_->interpolate(s1, s2, t, along_);
+                space_->interpolate(s1, s2, t, along_, ends);
                 return alongConfiguration_.read(*space_, along_);
             },
             [&] { return stopped(ptc); });

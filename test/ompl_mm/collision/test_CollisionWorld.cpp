@@ -313,6 +313,16 @@ TEST_F(MobileSweep, AMotionIntoAWallStopsSafelyShortOfIt)
     EXPECT_LT(y, -0.5 + 0.2 + 0.05);  // and not far from it
 }
 
+TEST_F(MobileSweep, AMotionNeverSafelyClearIsSafeNowhere)
+{
+    // along block2's top face (y = -0.5) 5 mm clear of it, into block1's east face (x = -0.5):
+    // block2 is measured only every few rounds, but it is never a safe clearance away
+    const CollisionWorld::SweepCheck check = sweep(V2(0.3, -0.295), V2(-0.6, -0.295));
+    ASSERT_FALSE(check.free);
+    EXPECT_EQ(check.contact[1], "obstacle 'block1'");
+    EXPECT_EQ(check.safeFraction, 0.0);
+}
+
 TEST_F(MobileSweep, APushKeepsTheRobotJustBehindTheObject)
 {
     // the robot 1 cm behind obj2 (radii 0.2 + 0.2), both moving 0.2 m along +x
@@ -442,4 +452,69 @@ TEST_F(PutDown, AnObjectOnTheEdgeOfATableIsLiftedStraightUp)
     ASSERT_GE(scene_.restingSurface(onEdge), 0);
     EXPECT_TRUE(putDown(onEdge, above).free);
     EXPECT_TRUE(putDown(above, onEdge).free);
+}
+
+TEST(ArmSweep, ArmMotionsFoundFreeAreFreeEverywhereAndBlockedOnesSafeWhereTheyStop)
+{
+    // KUKA TABLE's arm among its tables and cylinders: pairs far apart are measured only every few
+    // rounds (when their last measure no longer bounds them), the near ones every round
+    const Scene scene = loadScene(OMPL_MM_SCENES_DIR "/kuka_table.xml");
+    const ManipulationModelPtr model = makeModel(scene);
+    const CollisionWorld world(model);
+    const RobotModel &robot = model->robot();
+    std::vector<ObjectPose> poses;
+    std::vector<int> resting;
+    for (const MovableObject &object : scene.objects)
+    {
+        poses.push_back(object.start);
+        resting.push_back(scene.restingSurface(object.start.position));
+    }
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto randomPose = [&]
+    {
+        std::vector<double> q(robot.dof());
+        for (unsigned int i = 0; i < robot.dof(); ++i)
+            q[i] = robot.variableJoint(i).lower +
+                   unit(rng) * (robot.variableJoint(i).upper - robot.variableJoint(i).lower);
+        return q;
+    };
+    const auto isFree = [&](const std::vector<double> &q) {
+        return world.isCollisionFree({q.data(), &poses, &resting});
+    };
+    unsigned int free = 0, blocked = 0;
+    std::vector<double> along(robot.dof());
+    const auto at = [&](const std::vector<double> &a, const std::vector<double> &b, double t)
+    {
+        for (unsigned int i = 0; i < robot.dof(); ++i)
+            along[i] = a[i] + t * (b[i] - a[i]);
+        return along;
+    };
+    for (int k = 0; k < 1000; ++k)
+    {
+        const std::vector<double> a = randomPose(), b = randomPose();
+        if (!isFree(a) || !isFree(b))
+            continue;
+        const CollisionWorld::SweepCheck check =
+            world.checkSweep({a.data(), &poses, &resting}, {b.data(), &poses, &resting},
+                             [&](double t)
+                             {
+                                 at(a, b, t);
+                                 return CollisionWorld::Configuration{along.data(), &poses, &resting};
+                             });
+        if (check.free)
+        {
+            ++free;
+            for (int s = 1; s < 200; ++s)
+                ASSERT_TRUE(isFree(at(a, b, s / 200.0))) << "motion " << k << " at " << s / 200.0;
+        }
+        else
+        {
+            ++blocked;
+            EXPECT_FALSE(check.contact[0].empty()) << "motion " << k;
+            EXPECT_TRUE(isFree(at(a, b, check.safeFraction))) << "motion " << k;
+        }
+    }
+    EXPECT_GE(free, 20u);
+    EXPECT_GE(blocked, 20u);
 }
