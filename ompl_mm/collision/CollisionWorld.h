@@ -7,6 +7,7 @@
 #include <fcl/fcl.h>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -178,7 +179,20 @@ namespace ompl_mm
             double due{0.0};
             /** Up to where its last measure keeps it SAFE_CLEARANCE apart, or -1 */
             double clearUntil{-1.0};
+            /** Bound on how fast the bodies' relative speed changes (metres per fraction squared),
+                or infinity: only the rate bounds their motion (a carried object) */
+            double acceleration{std::numeric_limits<double>::infinity()};
+            /** Robot links of a self pair: each moves relative to the other */
+            bool self{false};
         };
+        /** Bound on the speed at which the bodies of a pair, placed at the motion's current
+            fraction, approach each other there (metres per fraction): their velocities
+            (MotionBounds::linkVelocity(); a sliding object's is constant) with their turns times
+            their reach. */
+        double approachSpeed(const SweptPair &pair, const double *q1, const double *q2) const;
+        /** How far along the motion (fraction) a pair stays closer than `margin` less than now:
+            by the rate, or by its speed now and its acceleration, whichever reaches farther. */
+        static double stepWithin(const SweptPair &pair, double margin, double closing, double speed);
         /** The distance of the bodies of a pair, placed: of their convex shapes; of a mesh's hull
             while that is at least HULL_TRUSTED away; else of the triangles. For an object that
             rests on the obstacle at one end (SweptPair::restsAtAnEnd), whichever is larger of that
@@ -203,7 +217,13 @@ namespace ompl_mm
             touches, cannot meet any more, or else up to where it stays apart (its due, keeping
             SAFE_CLEARANCE short of a contact ahead, or half of MIN_CLEARANCE when closer) and
             SAFE_CLEARANCE apart (its clearUntil). */
-        Progress advance(SweptPair &pair, double t) const;
+        Progress advance(SweptPair &pair, double t, const double *q1, const double *q2) const;
+        /** The object index of a body, or -1 for a robot link or an obstacle. */
+        int objectOf(const Body *body) const;
+        /** The robot link index of a body, or -1 for an object or an obstacle. */
+        int linkOf(const Body *body) const;
+        /** The reach of a body's points from its owner's origin, metres. */
+        static double reach(const Body &body) { return body.offset.translation().norm() + body.radius; }
         /** The object of a pair in contact that SweepCheck::blockingObject names, or -1. */
         int blockingObject(const SweptPair &pair) const;
 
@@ -242,5 +262,8 @@ namespace ompl_mm
         mutable std::vector<BodySweep> robotSweeps_;
         mutable std::vector<BodySweep> objectSweeps_;
         mutable std::vector<SweptPair> sweptPairs_;
+        mutable std::vector<MotionBounds::CarriedGrasp> carriedGrasps_;
+        mutable std::vector<double> robotAccelerations_;
+        mutable std::vector<double> objectAccelerations_;
     };
 }  // namespace ompl_mm

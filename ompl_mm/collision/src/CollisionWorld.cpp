@@ -392,35 +392,78 @@ namespace ompl_mm
                 link.owner, link.offset.translation().norm() + link.radius, from.joints, to.joints));
         std::vector<BodySweep> &objectSweeps = objectSweeps_;
         objectSweeps.clear();
+        std::vector<MotionBounds::CarriedGrasp> &grasps = carriedGrasps_;
+        grasps.assign(objectBodies_.size(), {});
         for (const Body &object : objectBodies_)
         {
             const ObjectPose &a = (*from.objects)[object.owner];
             const ObjectPose &b = (*to.objects)[object.owner];
-            objectSweeps.push_back(
-                isHeld(from, object.owner) || isHeld(to, object.owner)
-                    ? bounds_.carriedSweep(a, b, object.offset.translation().norm() + object.radius,
-                                           from.joints, to.joints)
-                    : MotionBounds::slideSweep(a, b, object.radius));
+            if (isHeld(from, object.owner) || isHeld(to, object.owner))
+            {
+                grasps[object.owner] = bounds_.carriedGrasp(a, b, reach(object), from.joints, to.joints);
+                objectSweeps.push_back(bounds_.carriedSweep(grasps[object.owner], from.joints, to.joints));
+            }
+            else
+                objectSweeps.push_back(MotionBounds::slideSweep(a, b, object.radius));
+        }
+        // how fast each body's points may change their speed: a link's by its joints, a sliding
+        // object's by its turn; a carried object's is not bounded here (its rate alone bounds it)
+        std::vector<double> &robotAccelerations = robotAccelerations_;
+        robotAccelerations.clear();
+        for (const Body &link : robotBodies_)
+            robotAccelerations.push_back(
+                from.joints ? bounds_.linkAcceleration(link.owner, reach(link), from.joints, to.joints)
+                            : 0.0);
+        std::vector<double> &objectAccelerations = objectAccelerations_;
+        objectAccelerations.clear();
+        for (const Body &object : objectBodies_)
+        {
+            const BodySweep &sweep = objectSweeps[object.owner];
+            const bool carried = isHeld(from, object.owner) || isHeld(to, object.owner);
+            objectAccelerations.push_back(carried             ? std::numeric_limits<double>::infinity()
+                                          : object.radius > 0 ? sweep.spread * sweep.spread / object.radius
+                                                              : 0.0);
         }
         const BodySweep still;
         std::vector<SweptPair> &pairs = sweptPairs_;
         pairs.clear();
         // true when the pair was added
-        const auto add = [&pairs](const Body &a, const Body &b, const BodySweep &sa, const BodySweep &sb)
+        const auto add = [&pairs](const Body &a, const Body &b, const BodySweep &sa, const BodySweep &sb,
+                                  double acceleration)
         {
             const double rate = (sa.translation - sb.translation).norm() + sa.spread + sb.spread;
             if (rate <= 0.0)  // bodies that keep their distance keep what both ends' checks found
                 return false;
             pairs.push_back({&a, &b, rate, sa.spread == 0.0 && sb.spread == 0.0});
+            pairs.back().acceleration = acceleration;
             return true;
         };
         for (std::size_t l = 0; l < robotBodies_.size(); ++l)
         {
             for (const Body &obstacle : obstacleBodies_)
-                add(robotBodies_[l], obstacle, robotSweeps[l], still);
+                add(robotBodies_[l], obstacle, robotSweeps[l], still, robotAccelerations[l]);
             for (const Body &object : objectBodies_)
-                if (!(robotBodies_[l].gripper && (isHeld(from, object.owner) || isHeld(to, object.owner))))
-                    add(robotBodies_[l], object, robotSweeps[l], objectSweeps[object.owner]);
+            {
+                const Body &link = robotBodies_[l];
+                const bool carried = isHeld(from, object.owner) || isHeld(to, object.owner);
+                if (carried && link.gripper)
+                    continue;
+                // an upright body, the same after any turn about its vertical axis, carried with the
+                // tool: only the joints between the link and the tool and the grasp's shift move it
+                // relative to the link, and the joints above both by tilting it
+                const bool symmetric = model_->scene().objects[object.owner].shape.turnsFreely() &&
+                                       object.offset.translation().head<2>().isZero();
+                if (carried && symmetric)
+                {
+                    const double rate = bounds_.carriedRelativeRate(
+                        link.owner, reach(link), grasps[object.owner], reach(object), from.joints, to.joints);
+                    if (rate > 0.0)
+                        pairs.push_back({&link, &object, rate, false});
+                }
+                else
+                    add(link, object, robotSweeps[l], objectSweeps[object.owner],
+                        robotAccelerations[l] + objectAccelerations[object.owner]);
+            }
         }
         // links measured against each other: only the joints between them count
         for (const auto &[a, b] : selfPairs_)
@@ -431,7 +474,13 @@ namespace ompl_mm
                 bounds_.relativeRate(la.owner, la.offset.translation().norm() + la.radius, lb.owner,
                                      lb.offset.translation().norm() + lb.radius, from.joints, to.joints);
             if (rate > 0.0)
+            {
                 pairs.push_back({&la, &lb, rate, false});
+                pairs.back().acceleration =
+                    bounds_.linkAcceleration(la.owner, reach(la), from.joints, to.joints, lb.owner) +
+                    bounds_.linkAcceleration(lb.owner, reach(lb), from.joints, to.joints, la.owner);
+                pairs.back().self = true;
+            }
         }
         for (std::size_t i = 0; i < objectBodies_.size(); ++i)
         {
@@ -443,27 +492,70 @@ namespace ompl_mm
                 const bool restsTo = restsOn(to, static_cast<int>(i), obstacle.owner);
                 if (restsFrom && restsTo)
                     continue;
-                if (add(objectBodies_[i], obstacle, objectSweeps[i], still))
+                if (add(objectBodies_[i], obstacle, objectSweeps[i], still, objectAccelerations[i]))
                     pairs.back().restsAtAnEnd = restsFrom != restsTo;
             }
             for (std::size_t j = i + 1; j < objectSweeps.size(); ++j)
-                add(objectBodies_[i], objectBodies_[j], objectSweeps[i], objectSweeps[j]);
+                add(objectBodies_[i], objectBodies_[j], objectSweeps[i], objectSweeps[j],
+                    objectAccelerations[i] + objectAccelerations[j]);
         }
     }
 
-    CollisionWorld::Progress CollisionWorld::advance(SweptPair &pair, double t) const
+    double CollisionWorld::approachSpeed(const SweptPair &pair, const double *q1, const double *q2) const
+    {
+        Eigen::Vector3d linear = Eigen::Vector3d::Zero();
+        double turning = 0.0;
+        const auto add = [&](const Body *body, const Body *other, double sign)
+        {
+            const int link = linkOf(body);
+            const int object = objectOf(body);
+            if (link >= 0)
+            {
+                const BodyVelocity velocity =
+                    bounds_.linkVelocity(link, linkFrames_, q1, q2, pair.self ? other->owner : -1);
+                linear += sign * velocity.linear;
+                turning += velocity.angular.norm() * reach(*body);
+            }
+            else if (object >= 0)
+            {
+                linear += sign * objectSweeps_[static_cast<std::size_t>(object)].translation;
+                turning += objectSweeps_[static_cast<std::size_t>(object)].spread;
+            }
+        };
+        add(pair.a, pair.b, 1.0);
+        add(pair.b, pair.a, -1.0);
+        return linear.norm() + turning;
+    }
+
+    double CollisionWorld::stepWithin(const SweptPair &pair, double margin, double closing, double speed)
+    {
+        const double byRate = margin / closing;
+        if (!std::isfinite(pair.acceleration))
+            return byRate;
+        // speed * h + acceleration * h^2 / 2 = margin, solved without cancellation
+        const double bySpeed =
+            2.0 * margin / (speed + std::sqrt(speed * speed + 2.0 * pair.acceleration * margin));
+        return std::max(byRate, bySpeed);
+    }
+
+    CollisionWorld::Progress CollisionWorld::advance(SweptPair &pair, double t, const double *q1,
+                                                     const double *q2) const
     {
         const double remaining = (1.0 - t) * pair.rate;
         // bounding boxes first: their gap is a lower bound on the distance; a pair that cannot come
         // near for the rest of the way is done
         const double apart = pair.a->object->getAABB().distance(pair.b->object->getAABB());
         if (apart > remaining + SAFE_CLEARANCE)
+        {
+            pair.clearUntil = std::numeric_limits<double>::infinity();
             return Progress::Apart;
+        }
         const bool exact = apart <= 2.0 * SAFE_CLEARANCE;
         const Measured measured = exact ? distance(pair) : Measured{apart, Measure::Boxes};
         const double d = measured.distance;
         if (d < MIN_CLEARANCE)
             return Progress::Touching;
+        pair.clearUntil = d >= SAFE_CLEARANCE ? t : -1.0;
         // stop a safe clearance short of a contact ahead, then close in as far as keeps half the
         // least clearance (so any part of a motion it accepts passes too)
         const double keep = d > 2.0 * SAFE_CLEARANCE ? SAFE_CLEARANCE : 0.5 * MIN_CLEARANCE;
@@ -477,9 +569,12 @@ namespace ompl_mm
                 std::min(closing, (pair.lastDistance - d + 2.0 * DISTANCE_ERROR) / (t - pair.lastFraction));
         if (closing <= 0.0)
             return Progress::Apart;  // only moving apart from here
-        pair.due = t + (d - DISTANCE_ERROR - keep) / closing;
-        pair.clearUntil =
-            d >= SAFE_CLEARANCE ? t + std::max(0.0, (d - DISTANCE_ERROR - SAFE_CLEARANCE) / closing) : -1.0;
+        // the pair's speed now and how fast it may change, where that bounds it closer than the rate
+        const double speed = std::isfinite(pair.acceleration) ? approachSpeed(pair, q1, q2) : closing;
+        pair.due = t + stepWithin(pair, d - DISTANCE_ERROR - keep, closing, speed);
+        if (d >= SAFE_CLEARANCE)
+            pair.clearUntil =
+                t + stepWithin(pair, std::max(0.0, d - DISTANCE_ERROR - SAFE_CLEARANCE), closing, speed);
         pair.lastFraction = t;
         pair.lastDistance = d;
         pair.lastMeasure = measured.measure;
@@ -501,6 +596,7 @@ namespace ompl_mm
             // before the fresh measures do, so that a step is never shorter than with every pair
             // measured, and a pair far from contact is measured only every few steps
             double next = std::numeric_limits<double>::infinity();
+            bool clear = true;  // every pair a safe clearance apart here
             for (const bool due : {true, false})
                 for (std::size_t k = 0; k < pairs.size();)
                 {
@@ -510,11 +606,12 @@ namespace ompl_mm
                         ++k;
                         continue;
                     }
-                    const Progress progress = advance(pair, t);
+                    const Progress progress = advance(pair, t, from.joints, to.joints);
                     if (progress == Progress::Touching)
                         return {false, safe, blockingObject(pair), {pair.a->label, pair.b->label}};
                     if (progress == Progress::Apart)
                     {
+                        clear = clear && t <= pair.clearUntil;
                         pairs[k] = pairs.back();
                         pairs.pop_back();
                         continue;
@@ -522,11 +619,16 @@ namespace ompl_mm
                     next = std::min(next, pair.due);
                     ++k;
                 }
+            // up to where every pair stays a safe clearance apart, within what is shown free
+            double clearTo = std::numeric_limits<double>::infinity();
             for (const SweptPair &pair : pairs)
+            {
                 next = std::min(next, pair.due);
-            if (std::all_of(pairs.begin(), pairs.end(),
-                            [t](const SweptPair &pair) { return t <= pair.clearUntil; }))
-                safe = t;
+                clear = clear && pair.clearUntil >= t;
+                clearTo = std::min(clearTo, pair.clearUntil);
+            }
+            if (clear)
+                safe = std::min(next, clearTo);
             if (pairs.empty() || next >= 1.0)
                 return {true, 1.0};
             if (stop && stop())
@@ -537,14 +639,21 @@ namespace ompl_mm
         return {false, safe};
     }
 
+    int CollisionWorld::objectOf(const Body *body) const
+    {
+        const bool isObject =
+            body >= objectBodies_.data() && body < objectBodies_.data() + objectBodies_.size();
+        return isObject ? body->owner : -1;
+    }
+
+    int CollisionWorld::linkOf(const Body *body) const
+    {
+        const bool isLink = body >= robotBodies_.data() && body < robotBodies_.data() + robotBodies_.size();
+        return isLink ? body->owner : -1;
+    }
+
     int CollisionWorld::blockingObject(const SweptPair &pair) const
     {
-        const auto objectOf = [this](const Body *body)
-        {
-            const bool isObject =
-                body >= objectBodies_.data() && body < objectBodies_.data() + objectBodies_.size();
-            return isObject ? body->owner : -1;
-        };
         const int a = objectOf(pair.a);
         const int b = objectOf(pair.b);
         if (a < 0 || b < 0)

@@ -1,5 +1,6 @@
 #include "ompl_mm/collision/MotionBounds.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ompl_mm
@@ -45,8 +46,9 @@ namespace ompl_mm
                 if (joint.variable >= 0)
                 {
                     const bool turns = joint.type != Joint::Type::Prismatic;
-                    chain.push_back({index, joint.variable, joint.multiplier, false,
-                                     frames[link].linear() * joint.axis, length, turns});
+                    chain.push_back({index, link, joint.variable, joint.multiplier, false,
+                                     frames[link].linear() * joint.axis, length, turns, joint.axis,
+                                     turns ? 1.0 : 0.0});
                 }
                 length += joint.origin.translation().norm() + travelReach(robot, joint);
             }
@@ -55,6 +57,8 @@ namespace ompl_mm
             for (auto it = chain.rbegin(); it != chain.rend(); ++it)
             {
                 it->translates = !it->turns && !turnsAbove;
+                if (it->turns && !turnsAbove)  // its axis keeps its direction in the world
+                    it->tilt = it->axis.normalized().cross(Eigen::Vector3d::UnitZ()).norm();
                 turnsAbove = turnsAbove || it->turns;
             }
             levers_[l] = std::move(chain);
@@ -95,13 +99,79 @@ namespace ompl_mm
         return below(linkA, reachA, linkB) + below(linkB, reachB, linkA);
     }
 
+    bool MotionBounds::isAbove(const Lever &lever, int link) const
+    {
+        return std::any_of(levers_[link].begin(), levers_[link].end(),
+                           [&lever](const Lever &above) { return above.joint == lever.joint; });
+    }
+
+    BodyVelocity MotionBounds::linkVelocity(int link, const std::vector<Eigen::Isometry3d> &frames,
+                                            const double *q1, const double *q2, int relativeTo) const
+    {
+        BodyVelocity velocity;
+        const Eigen::Vector3d &origin = frames[link].translation();
+        for (const Lever &lever : levers_[link])
+        {
+            if (relativeTo >= 0 && isAbove(lever, relativeTo))
+                break;  // the joints above are above relativeTo too
+            const double rate = lever.gain * (q2[lever.variable] - q1[lever.variable]);
+            const Eigen::Isometry3d &joint = frames[lever.child];
+            const Eigen::Vector3d axis = joint.linear() * lever.localAxis;
+            if (lever.turns)
+            {
+                velocity.angular += rate * axis;
+                velocity.linear += rate * axis.cross(origin - joint.translation());
+            }
+            else
+                velocity.linear += rate * axis;
+        }
+        return velocity;
+    }
+
+    double MotionBounds::linkAcceleration(int link, double reach, const double *q1, const double *q2,
+                                          int relativeTo) const
+    {
+        // levers_ runs up from the link: lever j's axis turns with the turning joints after it (their
+        // rates summed in turnAbove), and the link's points move relative to its origin by the
+        // joints up to it (their speeds summed in below)
+        std::vector<const Lever *> chain;
+        for (const Lever &lever : levers_[link])
+        {
+            if (relativeTo >= 0 && isAbove(lever, relativeTo))
+                break;
+            chain.push_back(&lever);
+        }
+        std::vector<double> rate(chain.size()), below(chain.size());
+        double sum = 0.0;
+        for (std::size_t j = 0; j < chain.size(); ++j)
+        {
+            rate[j] = std::abs(chain[j]->gain * (q2[chain[j]->variable] - q1[chain[j]->variable]));
+            sum += rate[j] * (chain[j]->turns ? chain[j]->length + reach : 1.0);
+            below[j] = sum;
+        }
+        double acceleration = 0.0;
+        double turnAbove = 0.0;
+        for (std::size_t j = chain.size(); j-- > 0;)
+        {
+            // a turning joint: its axis turns (turnAbove * lever) and the point's offset from it
+            // changes (turnAbove * lever + below); a sliding joint: its axis turns
+            acceleration += chain[j]->turns
+                                ? rate[j] * (2.0 * turnAbove * (chain[j]->length + reach) + below[j])
+                                : rate[j] * turnAbove;
+            if (chain[j]->turns)
+                turnAbove += rate[j];
+        }
+        return acceleration;
+    }
+
     BodySweep MotionBounds::slideSweep(const ObjectPose &from, const ObjectPose &to, double radius)
     {
         return {to.position - from.position, yawTurn(from.yaw, to.yaw) * radius};
     }
 
-    BodySweep MotionBounds::carriedSweep(const ObjectPose &from, const ObjectPose &to, double radius,
-                                         const double *q1, const double *q2) const
+    MotionBounds::CarriedGrasp MotionBounds::carriedGrasp(const ObjectPose &from, const ObjectPose &to,
+                                                          double radius, const double *q1,
+                                                          const double *q2) const
     {
         // the object's points lie within `grasp reach` of the tool link's origin at both ends and,
         // the grasp moving linearly, everywhere between them
@@ -112,11 +182,31 @@ namespace ompl_mm
             model_->robot().linkFrame(q2, model_->scene().robot.basePose, toolLink);
         const Eigen::Isometry3d grasp1 = tool1.inverse() * from.frame();
         const Eigen::Isometry3d grasp2 = tool2.inverse() * to.frame();
-        const double graspReach = std::max(grasp1.translation().norm(), grasp2.translation().norm()) + radius;
-        BodySweep sweep = linkSweep(toolLink, graspReach, q1, q2);
-        // and the grasp itself moves: its translation, and its turn about the object's centre
+        CarriedGrasp grasp;
+        grasp.centre = std::max(grasp1.translation().norm(), grasp2.translation().norm());
+        grasp.shift = (grasp2.translation() - grasp1.translation()).norm();
+        grasp.reach = grasp.centre + radius;
+        // the grasp itself moves: its translation, and its turn about the object's centre
         const double graspTurn = Eigen::AngleAxisd(grasp1.linear().transpose() * grasp2.linear()).angle();
-        sweep.spread += (grasp2.translation() - grasp1.translation()).norm() + graspTurn * graspReach;
+        grasp.change = grasp.shift + graspTurn * grasp.reach;
+        return grasp;
+    }
+
+    BodySweep MotionBounds::carriedSweep(const CarriedGrasp &grasp, const double *q1, const double *q2) const
+    {
+        BodySweep sweep = linkSweep(model_->toolLink(), grasp.reach, q1, q2);
+        sweep.spread += grasp.change;
         return sweep;
+    }
+
+    double MotionBounds::carriedRelativeRate(int link, double reach, const CarriedGrasp &grasp,
+                                             double objectReach, const double *q1, const double *q2) const
+    {
+        const int toolLink = model_->toolLink();
+        double tilt = 0.0;  // of the joints above both
+        for (const Lever &lever : levers_[link])
+            if (isAbove(lever, toolLink))
+                tilt += std::abs(lever.gain * (q2[lever.variable] - q1[lever.variable])) * lever.tilt;
+        return relativeRate(link, reach, toolLink, grasp.centre, q1, q2) + grasp.shift + tilt * objectReach;
     }
 }  // namespace ompl_mm

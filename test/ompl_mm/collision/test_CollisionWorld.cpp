@@ -3,6 +3,7 @@
 
 #include "ompl_mm/scene/SceneLoader.h"
 
+#include "common/MobileArm.h"
 #include "common/MobileBlocked.h"
 
 #include <gtest/gtest.h>
@@ -517,4 +518,41 @@ TEST(ArmSweep, ArmMotionsFoundFreeAreFreeEverywhereAndBlockedOnesSafeWhereTheySt
     }
     EXPECT_GE(free, 20u);
     EXPECT_GE(blocked, 20u);
+}
+
+TEST(ArmSweep, ALinkThatStartsAtRestAndSpeedsUpIsStoppedByWhatItReaches)
+{
+    // the mobile arm's base slides along y while its shoulder turns so that, at the start, the elbow
+    // stands still (the base's speed cancels the turn's); then it swings the forearm's sphere into
+    // a box: the speed at the start alone would let the check leap over it
+    Scene scene;
+    scene.robot.toolLink = "hand";
+    Obstacle box;
+    box.name = "box";
+    box.shape.kind = Shape::Kind::Box;
+    box.shape.boxSize = Eigen::Vector3d(0.1, 0.1, 0.1);
+    // where the forearm's sphere passes at three quarters of the way
+    box.pose.translation() = Eigen::Vector3d(0.1 + 0.55 * std::cos(-2.25), 0.3 + 0.55 * std::sin(-2.25), 0.5);
+    scene.obstacles.push_back(box);
+    const ManipulationModelPtr model =
+        std::make_shared<ManipulationModel>(scene, RobotModel::fromUrdfString(MOBILE_ARM, "mobile_arm"));
+    const CollisionWorld world(model);
+    const std::vector<ObjectPose> poses;
+    const std::vector<int> resting;
+    const std::vector<double> from{0.0, -0.6, 0.0, 0.0, 0.0}, to{0.0, 0.6, -3.0, 0.0, 0.0};
+    std::vector<double> along(from.size());
+    const auto at = [&](double t)
+    {
+        for (std::size_t i = 0; i < along.size(); ++i)
+            along[i] = from[i] + t * (to[i] - from[i]);
+        return CollisionWorld::Configuration{along.data(), &poses, &resting};
+    };
+    ASSERT_TRUE(world.isCollisionFree(at(0.0)));
+    ASSERT_TRUE(world.isCollisionFree(at(1.0)));
+    ASSERT_FALSE(world.isCollisionFree(at(0.75)));
+    const CollisionWorld::SweepCheck check =
+        world.checkSweep({from.data(), &poses, &resting}, {to.data(), &poses, &resting}, at);
+    EXPECT_FALSE(check.free);
+    EXPECT_EQ(check.contact[1], "obstacle 'box'");
+    EXPECT_LT(check.safeFraction, 0.75);
 }

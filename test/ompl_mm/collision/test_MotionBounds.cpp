@@ -2,6 +2,9 @@
 // motions, and a mobile base translates its body exactly.
 #include "ompl_mm/collision/MotionBounds.h"
 
+#include "ompl_mm/base/ManipulationStateSpace.h"
+#include "ompl_mm/scene/SceneLoader.h"
+
 #include "common/MobileArm.h"
 #include "common/MobileBlocked.h"
 
@@ -14,6 +17,17 @@ using namespace ompl_mm::test;
 
 namespace
 {
+    /** Joint values drawn uniformly within the robot's limits. */
+    std::vector<double> randomPose(const RobotModel &robot, std::mt19937 &rng)
+    {
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        std::vector<double> q;
+        for (unsigned int i = 0; i < robot.dof(); ++i)
+            q.push_back(robot.variableJoint(i).lower +
+                        unit(rng) * (robot.variableJoint(i).upper - robot.variableJoint(i).lower));
+        return q;
+    }
+
     /** Random points of every link of the model's robot, along random parts of random linear joint
         motions, stay within their sweeps; returns the largest share of a bound a point used. */
     double largestSweepShare(const ManipulationModelPtr &model)
@@ -22,14 +36,7 @@ namespace
         const MotionBounds bounds(model);
         std::mt19937 rng(7);
         std::uniform_real_distribution<double> unit(0.0, 1.0);
-        const auto randomJoints = [&]
-        {
-            std::vector<double> q;
-            for (unsigned int i = 0; i < robot.dof(); ++i)
-                q.push_back(robot.variableJoint(i).lower +
-                            unit(rng) * (robot.variableJoint(i).upper - robot.variableJoint(i).lower));
-            return q;
-        };
+        const auto randomJoints = [&] { return randomPose(robot, rng); };
         const double reach = 0.3;
         double tightest = 0.0;  // largest share of the bound a point used: the bound is not loose by far
         for (int trial = 0; trial < 300; ++trial)
@@ -164,4 +171,171 @@ TEST(MotionBounds, TwoLinksChangeTheirDistanceOnlyThroughTheJointsBetweenThem)
         largest = std::max(largest, std::abs(after - before) / (t * rate));
     }
     EXPECT_GT(largest, 0.1);  // not loose by far
+}
+
+namespace
+{
+    /** Along random parts of random linear joint motions of the model's robot, the velocity of
+        every link (alone, and relative to every other link) is the derivative of its points'
+        motion, and the rest of the motion stays within acceleration * h^2 / 2; returns the largest
+        share of that bound a point used. */
+    double largestAccelerationShare(const ManipulationModelPtr &model)
+    {
+        const RobotModel &robot = model->robot();
+        const MotionBounds bounds(model);
+        std::mt19937 rng(11);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        const auto randomJoints = [&] { return randomPose(robot, rng); };
+        const auto framesAt = [&](const std::vector<double> &q1, const std::vector<double> &q2, double t)
+        {
+            std::vector<double> q(q1.size());
+            for (std::size_t j = 0; j < q.size(); ++j)
+                q[j] = q1[j] + t * (q2[j] - q1[j]);
+            std::vector<Eigen::Isometry3d> frames;
+            robot.forwardKinematics(q.data(), Eigen::Isometry3d::Identity(), frames);
+            return frames;
+        };
+        const int links = static_cast<int>(robot.links().size());
+        const double reach = 0.3;
+        double tightest = 0.0;
+        for (int trial = 0; trial < 200; ++trial)
+        {
+            const std::vector<double> q1 = randomJoints(), q2 = randomJoints();
+            const double t = unit(rng), h = unit(rng) * (1.0 - t), epsilon = 1e-7;
+            const std::vector<Eigen::Isometry3d> now = framesAt(q1, q2, t),
+                                                 soon = framesAt(q1, q2, t + epsilon),
+                                                 later = framesAt(q1, q2, t + h);
+            const Eigen::Vector3d local =
+                reach * unit(rng) *
+                Eigen::Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5).normalized();
+            const Eigen::Vector3d other =
+                reach * unit(rng) *
+                Eigen::Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5).normalized();
+            for (int a = 0; a < links; ++a)
+            {
+                const BodyVelocity velocity = bounds.linkVelocity(a, now, q1.data(), q2.data());
+                const Eigen::Vector3d pointNow = now[a] * local;
+                const Eigen::Vector3d speed =
+                    velocity.linear + velocity.angular.cross(pointNow - now[a].translation());
+                const Eigen::Vector3d derivative = (soon[a] * local - pointNow) / epsilon;
+                EXPECT_LT((derivative - speed).norm(), 1e-5 * (1.0 + speed.norm())) << robot.links()[a].name;
+                const double acceleration = bounds.linkAcceleration(a, reach, q1.data(), q2.data());
+                const double rest = (later[a] * local - pointNow - h * speed).norm();
+                EXPECT_LE(rest, 0.5 * acceleration * h * h + 1e-12) << robot.links()[a].name;
+                if (acceleration > 0.0 && h > 0.0)
+                    tightest = std::max(tightest, rest / (0.5 * acceleration * h * h));
+                // relative to each other link: the vector between their points, seen from their
+                // common ancestor (which the joints above both move alike)
+                for (int b = 0; b < links; ++b)
+                {
+                    if (b == a)
+                        continue;
+                    int ancestor = a;
+                    while (!robot.isInSubtree(b, ancestor))
+                        ancestor = robot.links()[ancestor].parent;
+                    const auto between = [&](const std::vector<Eigen::Isometry3d> &frames) {
+                        return Eigen::Vector3d(frames[ancestor].linear().transpose() *
+                                               (frames[a] * local - frames[b] * other));
+                    };
+                    const BodyVelocity va = bounds.linkVelocity(a, now, q1.data(), q2.data(), b);
+                    const BodyVelocity vb = bounds.linkVelocity(b, now, q1.data(), q2.data(), a);
+                    const Eigen::Vector3d relative =
+                        now[ancestor].linear().transpose() *
+                        (va.linear + va.angular.cross(now[a] * local - now[a].translation()) - vb.linear -
+                         vb.angular.cross(now[b] * other - now[b].translation()));
+                    const Eigen::Vector3d changed = (between(soon) - between(now)) / epsilon;
+                    EXPECT_LT((changed - relative).norm(), 1e-5 * (1.0 + relative.norm()))
+                        << robot.links()[a].name << " from " << robot.links()[b].name;
+                    const double bound = bounds.linkAcceleration(a, reach, q1.data(), q2.data(), b) +
+                                         bounds.linkAcceleration(b, reach, q1.data(), q2.data(), a);
+                    EXPECT_LE((between(later) - between(now) - h * relative).norm(),
+                              0.5 * bound * h * h + 1e-12)
+                        << robot.links()[a].name << " from " << robot.links()[b].name;
+                }
+            }
+        }
+        return tightest;
+    }
+}  // namespace
+
+TEST(MotionBounds, ALinksVelocityIsItsPointsDerivativeAndItsAccelerationBoundsTheRest)
+{
+    EXPECT_GT(largestAccelerationShare(mobileArm()), 0.05);
+    EXPECT_GT(largestAccelerationShare(mimicGripper()), 0.05);
+    EXPECT_GT(largestAccelerationShare(makeModel(loadScene(OMPL_MM_SCENES_DIR "/kuka_table.xml"))), 0.05);
+}
+
+TEST(MotionBounds, AnUprightCarriedObjectMovesRelativeToALinkByTheJointsBetweenAndTheTiltAbove)
+{
+    // KUKA TABLE's arm carrying an upright body with the tool, its yaw kept, as the state space
+    // interpolates a transfer: link and object points change their distance within the rate
+    const ManipulationModelPtr model = makeModel(loadScene(OMPL_MM_SCENES_DIR "/kuka_table.xml"));
+    const RobotModel &robot = model->robot();
+    const MotionBounds bounds(model);
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto random = [&](double size) -> Eigen::Vector3d
+    { return Eigen::Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5) * (2.0 * size); };
+    const auto jointsAt = [&](const std::vector<double> &q1, const std::vector<double> &q2, double t)
+    {
+        std::vector<double> q(q1.size());
+        for (std::size_t j = 0; j < q.size(); ++j)
+            q[j] = q1[j] + t * (q2[j] - q1[j]);
+        return q;
+    };
+    const double reach = 0.2, objectReach = 0.1, yaw = 0.7;
+    double tightest = 0.0;
+    for (int trial = 0; trial < 300; ++trial)
+    {
+        const std::vector<double> q1 = randomPose(robot, rng), q2 = randomPose(robot, rng);
+        const Eigen::Vector3d grasp1 = random(0.15), grasp2 = trial % 2 ? grasp1 : random(0.15);
+        const Eigen::Isometry3d tool1 = model->toolFrame(q1.data()), tool2 = model->toolFrame(q2.data());
+        const ObjectPose from{tool1 * grasp1, yaw}, to{tool2 * grasp2, yaw};
+        const MotionBounds::CarriedGrasp grasp =
+            bounds.carriedGrasp(from, to, objectReach, q1.data(), q2.data());
+        double t1 = unit(rng), t2 = unit(rng);
+        if (t1 > t2)
+            std::swap(t1, t2);
+        std::vector<Eigen::Isometry3d> framesA, framesB;
+        const std::vector<double> a = jointsAt(q1, q2, t1), b = jointsAt(q1, q2, t2);
+        robot.forwardKinematics(a.data(), model->scene().robot.basePose, framesA);
+        robot.forwardKinematics(b.data(), model->scene().robot.basePose, framesB);
+        const ObjectPose poseA =
+            ManipulationStateSpace::carriedPose(from, to, tool1, tool2, model->toolFrame(a.data()), t1, true);
+        const ObjectPose poseB =
+            ManipulationStateSpace::carriedPose(from, to, tool1, tool2, model->toolFrame(b.data()), t2, true);
+        const Eigen::Vector3d local = random(reach / std::sqrt(3.0)),
+                              offset = random(objectReach / std::sqrt(3.0));
+        for (std::size_t l = 0; l < robot.links().size(); ++l)
+        {
+            const double rate = bounds.carriedRelativeRate(static_cast<int>(l), reach, grasp, objectReach,
+                                                           q1.data(), q2.data());
+            const double distanceA = (framesA[l] * local - poseA.frame() * offset).norm();
+            const double distanceB = (framesB[l] * local - poseB.frame() * offset).norm();
+            EXPECT_LE(std::abs(distanceB - distanceA), (t2 - t1) * rate + 1e-12) << robot.links()[l].name;
+            if (rate > 0.0 && t2 > t1)
+                tightest = std::max(tightest, std::abs(distanceB - distanceA) / ((t2 - t1) * rate));
+        }
+    }
+    EXPECT_GT(tightest, 0.1);
+    // the arm still, the grasp shifting: as far as the object's frame moves in the gripper
+    const std::vector<double> still(robot.dof(), 0.3);
+    const Eigen::Isometry3d tool = model->toolFrame(still.data());
+    const MotionBounds::CarriedGrasp shifting = bounds.carriedGrasp(
+        {tool * Eigen::Vector3d(0.0, 0.0, 0.05), yaw}, {tool * Eigen::Vector3d(0.1, 0.0, 0.05), yaw},
+        objectReach, still.data(), still.data());
+    EXPECT_NEAR(bounds.carriedRelativeRate(robot.linkIndex("link5"), reach, shifting, objectReach,
+                                           still.data(), still.data()),
+                0.1, 1e-12);
+    // the arm swinging about its vertical first axis alone: the wrist keeps its distance to the
+    // cylinder its gripper holds
+    std::vector<double> q1(robot.dof(), 0.3), q2 = q1;
+    q2[0] = -1.2;
+    const Eigen::Vector3d inGripper(0.0, 0.0, 0.05);
+    const MotionBounds::CarriedGrasp grasp = bounds.carriedGrasp(
+        {model->toolFrame(q1.data()) * inGripper, yaw}, {model->toolFrame(q2.data()) * inGripper, yaw},
+        objectReach, q1.data(), q2.data());
+    EXPECT_NEAR(
+        bounds.carriedRelativeRate(robot.linkIndex("link7"), reach, grasp, objectReach, q1.data(), q2.data()),
+        0.0, 1e-12);
 }
