@@ -2,7 +2,8 @@
 // every solution re-checked from its states alone, without its labels: joints within limits, every object
 // either resting on a surface or held by the tool with one grasp from its pickup to its place, at most one
 // object held, an object that slides on its surface moving with the tool (a push) and alone, nothing else
-// moving, the goal reached; and OMPL's own PathGeometric::check().
+// moving, the goal reached, every state along the way valid (20 per segment); and OMPL's own
+// PathGeometric::check().
 #include "common/MobileBlocked.h"
 #include "common/MoplIterations.h"
 #include "ompl_core/run/GlobalSeed.h"
@@ -85,6 +86,8 @@ namespace
             for (int k = 0; k <= STEPS; ++k)
             {
                 space.interpolate(a, b, static_cast<double>(k) / STEPS, between);
+                // the state check, which knows nothing of how motions are checked between states
+                ASSERT_TRUE(path.getSpaceInformation()->isValid(between)) << "segment " << i << " at " << k;
                 for (unsigned int j = 0; j < robot.dof(); ++j)
                     ASSERT_GE(space.robotValues(between)[j], robot.variableJoint(j).lower - 1e-12);
                 unsigned int held = 0;
