@@ -2,12 +2,15 @@
 #include "ompl_mm/collision/CollisionWorld.h"
 
 #include "ompl_mm/scene/SceneLoader.h"
+#include "ompl_mm/setup/SceneRobot.h"
 
 #include "common/MobileArm.h"
 #include "common/MobileBlocked.h"
+#include "common/PandaPick.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -170,6 +173,34 @@ TEST(CollisionWorldGrasp, LinksBelowTheToolLinkMayTouchTheHeldObjectAndNoOthers)
     poses[0].position = Eigen::Vector3d(0.0, 0.0, 0.045);  // into the base's top (z up to 0.05)
     EXPECT_FALSE(world.isCollisionFree({q.data(), &poses, &held}, &contact));
     EXPECT_EQ(contact, "robot link 'base' and object 'cube'");
+}
+
+TEST(CollisionWorldGrasp, GripperLinksTheSrdfListsMayTouchTheHeldObject)
+{
+    // the Panda's tool frame (panda_grasptarget) hangs below its hand, beside the fingers: its SRDF's
+    // end effector lists the hand and the fingers, which may touch what the gripper holds
+    const SceneRobot loaded = loadSceneRobot(pandaPickScene());
+    const Scene &scene = loaded.scene;
+    const ManipulationModelPtr model = std::make_shared<ManipulationModel>(scene, loaded.robot);
+    ASSERT_FALSE(scene.robot.gripperLinks.empty());
+    const CollisionWorld world(model);
+    const RobotModel &robot = model->robot();
+    const int finger = robot.linkIndex("panda_leftfinger");
+    ASSERT_FALSE(robot.isInSubtree(finger, model->toolLink()));
+    std::vector<Eigen::Isometry3d> frames;
+    robot.forwardKinematics(scene.robotStart.data(), scene.robot.basePose, frames);
+    // the cylinder (r 0.03, 0.07 long) about the left finger's origin
+    std::vector<ObjectPose> poses{{frames[finger].translation() - Eigen::Vector3d(0.0, 0.0, 0.035), 0.0}};
+    const std::vector<int> held{-1}, resting{0};
+    std::string contact;
+    EXPECT_TRUE(world.isCollisionFree({scene.robotStart.data(), &poses, &held}, &contact)) << contact;
+    EXPECT_FALSE(world.isCollisionFree({scene.robotStart.data(), &poses, &resting}, &contact));
+    // with a link the SRDF lists, not one below the tool frame
+    const std::vector<std::string> &listed = scene.robot.gripperLinks;
+    EXPECT_TRUE(std::any_of(listed.begin(), listed.end(),
+                            [&contact](const std::string &link)
+                            { return contact.rfind("robot link '" + link + "'", 0) == 0; }))
+        << contact;
 }
 
 TEST_F(MobileWorld, OverlapIsSymmetricInTheObjectPair)

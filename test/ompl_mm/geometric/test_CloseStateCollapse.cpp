@@ -83,6 +83,31 @@ TEST(CloseStateCollapse, GivesOmplsPathStepForStep)
     EXPECT_GT(collapsed, 15u) << "the wandering paths give it work";
 }
 
+TEST(CloseStateCollapse, MovesOnFromAPairThatFailsAsOmplDoes)
+{
+    // over the disc and down past it: the closest pair (the first and third states) would cut
+    // through the disc, the next closest (the third and fifth) passes it: collapsed after the
+    // failure, as OMPL does
+    const ob::SpaceInformationPtr si = planeWithDisc();
+    og::PathGeometric ours(si);
+    ob::State *state = si->allocState();
+    for (const auto &[x, y] : std::vector<std::pair<double, double>>{
+             {-1.2, 0.05}, {0.0, 1.5}, {1.2, 0.05}, {1.2, -3.0}, {3.0, -3.0}})
+    {
+        double *v = state->as<ob::RealVectorStateSpace::StateType>()->values;
+        v[0] = x;
+        v[1] = y;
+        ours.append(state);
+    }
+    si->freeState(state);
+    og::PathGeometric omplsOwn(ours);
+    og::PathSimplifier simplifier(si);
+    ASSERT_TRUE(simplifier.collapseCloseVertices(omplsOwn));
+    EXPECT_TRUE(collapseCloseStates(ours, ob::plannerNonTerminatingCondition()));
+    EXPECT_EQ(valuesOf(ours), valuesOf(omplsOwn));
+    EXPECT_EQ(ours.getStateCount(), 4u);
+}
+
 TEST(CloseStateCollapse, StopsAtItsConditionAndKeepsThePathWhole)
 {
     const ob::SpaceInformationPtr si = planeWithDisc();
