@@ -115,8 +115,11 @@ namespace ompl_mm
                 vertical when no turning joint above it turns that axis, else 1; 0 for a sliding one */
             double tilt;
         };
-        /** True when lever's joint is above link too. */
-        bool isAbove(const Lever &lever, int link) const;
+        /** How many of link's levers (from the link up) are not above link relativeTo: the joints
+            that move it relative to relativeTo; all of them when relativeTo < 0. */
+        std::size_t ownLevers(int link, int relativeTo) const;
+        /** How fast the lever's joint moves points within reach of the link's origin. */
+        static double leverSpeed(const Lever &lever, double reach, const double *q1, const double *q2);
 
         ManipulationModelPtr model_;
         std::vector<std::vector<Lever>> levers_;  ///< per link, the moving joints above it

@@ -74,7 +74,7 @@ namespace ompl_mm
             if (lever.translates)
                 sweep.translation += change * lever.axis;
             else
-                sweep.spread += std::abs(change) * (lever.turns ? lever.length + reach : 1.0);
+                sweep.spread += leverSpeed(lever, reach, q1, q2);
         }
         return sweep;
     }
@@ -85,24 +85,31 @@ namespace ompl_mm
         const auto below = [&](int link, double reach, int other)
         {
             double rate = 0.0;
-            for (const Lever &lever : levers_[link])
-            {
-                bool shared = false;
-                for (const Lever &above : levers_[other])
-                    shared = shared || above.joint == lever.joint;
-                if (!shared)
-                    rate += std::abs(lever.gain * (q2[lever.variable] - q1[lever.variable])) *
-                            (lever.turns ? lever.length + reach : 1.0);
-            }
+            for (std::size_t j = 0; j < ownLevers(link, other); ++j)
+                rate += leverSpeed(levers_[link][j], reach, q1, q2);
             return rate;
         };
         return below(linkA, reachA, linkB) + below(linkB, reachB, linkA);
     }
 
-    bool MotionBounds::isAbove(const Lever &lever, int link) const
+    std::size_t MotionBounds::ownLevers(int link, int relativeTo) const
     {
-        return std::any_of(levers_[link].begin(), levers_[link].end(),
-                           [&lever](const Lever &above) { return above.joint == lever.joint; });
+        const std::vector<Lever> &levers = levers_[link];
+        if (relativeTo < 0)
+            return levers.size();
+        // the joints above both are the last of the link's levers
+        const auto shared = [&](const Lever &lever)
+        {
+            return std::any_of(levers_[relativeTo].begin(), levers_[relativeTo].end(),
+                               [&lever](const Lever &above) { return above.joint == lever.joint; });
+        };
+        return static_cast<std::size_t>(std::find_if(levers.begin(), levers.end(), shared) - levers.begin());
+    }
+
+    double MotionBounds::leverSpeed(const Lever &lever, double reach, const double *q1, const double *q2)
+    {
+        return std::abs(lever.gain * (q2[lever.variable] - q1[lever.variable])) *
+               (lever.turns ? lever.length + reach : 1.0);
     }
 
     BodyVelocity MotionBounds::linkVelocity(int link, const std::vector<Eigen::Isometry3d> &frames,
@@ -110,10 +117,10 @@ namespace ompl_mm
     {
         BodyVelocity velocity;
         const Eigen::Vector3d &origin = frames[link].translation();
-        for (const Lever &lever : levers_[link])
+        const std::size_t moving = ownLevers(link, relativeTo);
+        for (std::size_t j = 0; j < moving; ++j)
         {
-            if (relativeTo >= 0 && isAbove(lever, relativeTo))
-                break;  // the joints above are above relativeTo too
+            const Lever &lever = levers_[link][j];
             const double rate = lever.gain * (q2[lever.variable] - q1[lever.variable]);
             const Eigen::Isometry3d &joint = frames[lever.child];
             const Eigen::Vector3d axis = joint.linear() * lever.localAxis;
@@ -134,32 +141,24 @@ namespace ompl_mm
         // levers_ runs up from the link: lever j's axis turns with the turning joints after it (their
         // rates summed in turnAbove), and the link's points move relative to its origin by the
         // joints up to it (their speeds summed in below)
-        std::vector<const Lever *> chain;
-        for (const Lever &lever : levers_[link])
-        {
-            if (relativeTo >= 0 && isAbove(lever, relativeTo))
-                break;
-            chain.push_back(&lever);
-        }
-        std::vector<double> rate(chain.size()), below(chain.size());
-        double sum = 0.0;
-        for (std::size_t j = 0; j < chain.size(); ++j)
-        {
-            rate[j] = std::abs(chain[j]->gain * (q2[chain[j]->variable] - q1[chain[j]->variable]));
-            sum += rate[j] * (chain[j]->turns ? chain[j]->length + reach : 1.0);
-            below[j] = sum;
-        }
+        const std::vector<Lever> &levers = levers_[link];
+        const std::size_t count = ownLevers(link, relativeTo);
+        double below = 0.0;
+        for (std::size_t j = 0; j < count; ++j)
+            below += leverSpeed(levers[j], reach, q1, q2);
         double acceleration = 0.0;
         double turnAbove = 0.0;
-        for (std::size_t j = chain.size(); j-- > 0;)
+        for (std::size_t j = count; j-- > 0;)
         {
+            const Lever &lever = levers[j];
+            const double rate = std::abs(lever.gain * (q2[lever.variable] - q1[lever.variable]));
             // a turning joint: its axis turns (turnAbove * lever) and the point's offset from it
             // changes (turnAbove * lever + below); a sliding joint: its axis turns
-            acceleration += chain[j]->turns
-                                ? rate[j] * (2.0 * turnAbove * (chain[j]->length + reach) + below[j])
-                                : rate[j] * turnAbove;
-            if (chain[j]->turns)
-                turnAbove += rate[j];
+            acceleration +=
+                lever.turns ? rate * (2.0 * turnAbove * (lever.length + reach) + below) : rate * turnAbove;
+            below -= leverSpeed(lever, reach, q1, q2);
+            if (lever.turns)
+                turnAbove += rate;
         }
         return acceleration;
     }
@@ -204,9 +203,10 @@ namespace ompl_mm
     {
         const int toolLink = model_->toolLink();
         double tilt = 0.0;  // of the joints above both
-        for (const Lever &lever : levers_[link])
-            if (isAbove(lever, toolLink))
-                tilt += std::abs(lever.gain * (q2[lever.variable] - q1[lever.variable])) * lever.tilt;
+        const std::vector<Lever> &levers = levers_[link];
+        for (std::size_t j = ownLevers(link, toolLink); j < levers.size(); ++j)
+            tilt +=
+                std::abs(levers[j].gain * (q2[levers[j].variable] - q1[levers[j].variable])) * levers[j].tilt;
         return relativeRate(link, reach, toolLink, grasp.centre, q1, q2) + grasp.shift + tilt * objectReach;
     }
 }  // namespace ompl_mm
