@@ -10,7 +10,11 @@ dependents are not relinked when a library changes, so a mutant recompiles its f
 including a mutated header) and relinks one library; only the tests that use a rebuilt library,
 executable or module run (a test naming no build output always runs), the mutated file's own test
 (test_<Name>) first, each test executable stopping at its first failing case and the run at the
-first failing test.
+first failing test. The test that killed each mutant last time is kept in killers.txt beside the
+mutants: a mutant with one is first built only as far as that test needs (its executable, the
+libraries and apps it uses) and that test run alone; only when it survives that is everything
+rebuilt and every affected test run. A mutated header then recompiles one library and one test
+instead of every file including it.
 
 Usage:
   test/mutation/run_mutants.py [--only ID[,ID...]] [--work DIR] [--jobs N] [--report FILE]
@@ -33,6 +37,7 @@ ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 # the timed fuzzing of the readers (how many inputs it tries depends on the machine's speed)
 EXCLUDED_TESTS = "test_api_docs|test_layering|downstream_package|test_fuzz_"
 FIELDS = ("id", "file", "old", "new")
+KILLERS = os.path.join(HERE, "killers.txt")
 
 
 def read_mutants(path):
@@ -70,6 +75,31 @@ def check_applies(mutant, src):
         sys.exit(f"mutant {mutant['id']}: 'old' occurs {count} times in {mutant['file']} (must be once), "
                  "or equals 'new'")
     return text
+
+
+def read_killers(path):
+    """mutant id -> the test that killed it last time (lines 'id test'; none when there is no file)."""
+    if not os.path.isfile(path):
+        return {}
+    with open(path, encoding="utf-8") as f:
+        return dict(line.split() for line in f if line.strip() and not line.startswith("#"))
+
+
+def write_killers(path, killers):
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("# The test that killed each mutant of mutants.txt last time (written by run_mutants.py).\n")
+        for mutant_id in sorted(killers):
+            f.write(f"{mutant_id} {killers[mutant_id]}\n")
+
+
+def failed_test(build):
+    """The test the last failing CTest run stopped at, or None."""
+    failed = os.path.join(build, "Testing", "Temporary", "LastTestsFailed.log")
+    if not os.path.isfile(failed):
+        return None
+    with open(failed) as f:
+        names = [line.strip().split(":", 1)[1] for line in f if ":" in line]
+    return names[0] if names else None
 
 
 def build_outputs(build):
@@ -220,6 +250,8 @@ def main():
     if run(configure, src, log) != 0 or run(["cmake", "--build", build, "-j", str(args.jobs)], src, log) != 0:
         sys.exit(f"the unmutated copy does not build: see {log}")
     plan = test_plan(build)
+    uses = {name: used for name, used in plan}
+    killers = read_killers(KILLERS)
     if run_tests([name for name, _ in plan], build, log, args.jobs) != 0:
         sys.exit(f"the suite fails without any mutant: see {log}")
     print(f"built and passed in {time.monotonic() - started:.0f} s", flush=True)
@@ -232,16 +264,30 @@ def main():
         before = build_outputs(build)
         with open(path, "w", encoding="utf-8") as f:
             f.write(original.replace(mutant["old"], mutant["new"]))
-        tests = []
+        tests, outcome = [], None
         try:
-            if run(["cmake", "--build", build, "-j", str(args.jobs)], src, log) != 0:
-                outcome = "stillborn"
-            else:
-                after = build_outputs(build)
-                changed = {o for o, t in after.items() if before.get(o) != t}
-                tests = affected_tests(plan, changed)
-                own = "test_" + os.path.splitext(os.path.basename(mutant["file"]))[0]
-                outcome = "killed" if run_tests(tests, build, log, args.jobs, own) != 0 else "survived"
+            # the test that killed it last time, built only as far as it needs
+            killer = killers.get(mutant["id"])
+            needs = uses.get(killer)
+            if needs:
+                targets = sorted(os.path.relpath(o, build) for o in needs)
+                if run(["ninja", "-C", build, "-j", str(args.jobs)] + targets, src, log) != 0:
+                    outcome = "stillborn"
+                elif run_tests([killer], build, log, args.jobs) != 0:
+                    tests, outcome = [killer], "killed"
+            if outcome is None:
+                if run(["cmake", "--build", build, "-j", str(args.jobs)], src, log) != 0:
+                    outcome = "stillborn"
+                else:
+                    after = build_outputs(build)
+                    changed = {o for o, t in after.items() if before.get(o) != t}
+                    tests = affected_tests(plan, changed)
+                    own = "test_" + os.path.splitext(os.path.basename(mutant["file"]))[0]
+                    if run_tests(tests, build, log, args.jobs, own) != 0:
+                        outcome = "killed"
+                        killers[mutant["id"]] = failed_test(build) or killers.get(mutant["id"])
+                    else:
+                        outcome = "survived"
         finally:
             with open(path, "w", encoding="utf-8") as f:
                 f.write(original)
@@ -251,6 +297,8 @@ def main():
         if args.report:  # as it goes: a long run may be interrupted
             with open(args.report, "a") as f:
                 f.write(f"{outcome} {mutant['id']}\n")
+        if outcome == "killed":
+            write_killers(KILLERS, {k: v for k, v in killers.items() if v})
     # leave the build matching the sources
     run(["cmake", "--build", build, "-j", str(args.jobs)], src, log)
     print(f"whole run: {time.monotonic() - started:.0f} s")
