@@ -5,7 +5,8 @@ and reports each one's median and mean planning time, success, the median of the
 ratios (robust to seeds of very different length), and how many seeds gave an identical result
 (every value both write, but the times). With --quality (ompl_mm_plan only) it also reports
 plan quality from the JSON and the path files: mean tool-path length, round-trip pushes (an
-object pushed back to where it stood before), and the smoothing time. Standard library only.
+object pushed back to where it stood before), push reversals (a push moving an object back against
+the push before, ManipulationPath::pushReversals) and the smoothing time. Standard library only.
 
 Example (before/after figures of a change):
   benchmarks/ab_seeds.py /tmp/old/ompl_mm_plan build/apps/ompl_mm_plan scenes/mobile_blocked.xml --seeds 50
@@ -15,7 +16,7 @@ import statistics
 import sys
 import tempfile
 
-from run_records import check_binary, read_path_file, round_trip_pushes, run_app
+from run_records import check_binary, push_reversals, read_path_file, round_trip_pushes, run_app
 
 
 def same_values(a, b):
@@ -39,18 +40,23 @@ def describe_quality(name, records):
     if not solved:
         return f"{name}: no solved run"
     trips = [r["round_trips"] for r in solved]
+    reversals = [r["reversals"] for r in solved]
     return (f"{name}: tool path mean {statistics.mean(r['path_length_m'] for r in solved):.3f} m, "
             f"round-trip pushes {sum(trips)} in {sum(1 for t in trips if t)}/{len(solved)} plans, "
+            f"push reversals {sum(reversals)} in {sum(1 for r in reversals if r)}/{len(solved)} plans, "
             f"smoothing time median {statistics.median(r['stats']['time_smoothing_s'] for r in solved):.4f} s")
 
 
 def run_with_quality(binary, scene, seed, workdir, extra, quality):
-    """One run; with quality, its record gets the round trips counted in its path file."""
+    """One run; with quality, its record gets the round trips and push reversals counted in its path
+    file (an older build's record may not count them)."""
     if not quality:
         return run_app(binary, scene, seed, workdir, extra)
     path_file = f"{workdir}/path.txt"
     record = run_app(binary, scene, seed, workdir, extra, path_file=path_file)
-    record["round_trips"] = round_trip_pushes(read_path_file(path_file)) if record["solved"] else 0
+    rows = read_path_file(path_file) if record["solved"] else []
+    record["round_trips"] = round_trip_pushes(rows)
+    record["reversals"] = push_reversals(rows)
     return record
 
 
@@ -62,7 +68,8 @@ def main():
     parser.add_argument("--seeds", type=int, default=50, help="number of seeds (1..N), default 50")
     parser.add_argument("--first-seed", type=int, default=1)
     parser.add_argument("--quality", action="store_true",
-                        help="also report tool-path length, round-trip pushes and smoothing time (ompl_mm_plan)")
+                        help="also report tool-path length, round-trip pushes, push reversals and smoothing "
+                        "time (ompl_mm_plan)")
     parser.add_argument("--args", nargs=argparse.REMAINDER, default=[],
                         help="further options for both apps (e.g. --planner rrt --time-limit 60)")
     args = parser.parse_args()

@@ -2,6 +2,7 @@
 scene, planner, seed, time_limit_s, solved, approximate, status, time_s, then the library's
 details), read back by the benchmark scripts. Standard library only."""
 import json
+import math
 import os
 import sys
 import tempfile
@@ -47,6 +48,28 @@ def read_path_file(path_file):
             values = line.split()
             rows.append({k: (v if k in ("segment", "object") else float(v)) for k, v in zip(header, values)})
     return rows
+
+
+def push_reversals(rows, tolerance=1e-3):
+    """Pushes that move an object back against the push of it just before (the object not moved
+    between them) by more than tolerance metres, as ManipulationPath::pushReversals() counts them:
+    the push before carried the object past a point this one brings it back towards."""
+    objects = sorted({k[:-2] for k in rows[0] if k.endswith(".x") and k[:-2] + ".yaw" in rows[0]}) if rows else []
+    count = 0
+    for obj in objects:
+        previous = None  # the object's last push, while nothing else has moved it since
+        for before, row in zip(rows, rows[1:]):
+            moved = [row[f"{obj}.{c}"] - before[f"{obj}.{c}"] for c in ("x", "y", "z")]
+            if row["segment"] != "push" or row["object"] != obj:
+                if any(moved):
+                    previous = None
+                continue
+            if not any(moved):
+                continue
+            if previous and sum(a * b for a, b in zip(moved, previous)) / math.hypot(*previous) < -tolerance:
+                count += 1
+            previous = moved
+    return count
 
 
 def round_trip_pushes(rows, tolerance=1e-6):

@@ -61,6 +61,23 @@ namespace ompl_mm
             counts once; a run of transit segments counts as one transit). */
         std::map<std::string, unsigned int> primitiveCounts() const;
 
+        /** A push that moves an object back against the push of it just before. */
+        struct PushReversal
+        {
+            unsigned int object;  ///< the object pushed back
+            std::size_t earlier;  ///< the segment (from state `earlier` to the next) of the push before
+            std::size_t later;    ///< the segment that pushes the object back
+        };
+        /** How far a push must move an object back along the push before it to be a reversal,
+            metres: more than rounding, less than any push worth making. */
+        static constexpr double REVERSAL_TOLERANCE = 1e-3;
+        /** The push reversals of the path, in the order of their earlier segments: pairs of push
+            segments of one object, the object not moved between them, where the later moves it
+            back along the earlier's direction by more than REVERSAL_TOLERANCE (the earlier push
+            carried it past a point the later one brings it back towards; a round trip is one).
+            @throws as labels(). */
+        std::vector<PushReversal> pushReversals() const;
+
         /** Checks that every segment is one its label allows: transit moves no object, a push or
             transfer moves only its object, and that objects move only in such segments. Returns an
             empty string when consistent, else a description of the first fault (also when

@@ -18,7 +18,10 @@ namespace ompl_mm
            left where it was (the pushes become the robot's transits, routed around the object
            where they meet it) or, when that fails, the return push ends early (where it found the
            object, or at one of its waypoints short of the start) and the object stays there for
-           the rest of the way, if the goal still holds; then every push run ends as early as
+           the rest of the way, if the goal still holds; a push that moves an object back
+           against the push of it before (ManipulationPath::pushReversals) is dropped or made
+           shorter, the push before ending where it comes nearest to where the object is wanted
+           (endReversal); then every push run ends as early as
            it may (dropped, or ended at one of its waypoints, the object staying there for the rest
            of the way) when the goal still holds and the tool travels no farther;
         2. replans random windows of the path, from the start of one primitive run to the end of
@@ -49,6 +52,7 @@ namespace ompl_mm
         struct Outcome
         {
             unsigned int roundTripsRemoved{0};  ///< objects no longer pushed away and back
+            unsigned int reversalsRemoved{0};   ///< pushes no longer moving an object back
             unsigned int pushesShortened{0};    ///< push runs ended early or dropped
             unsigned int windowsReplanned{0};   ///< windows replaced by shorter primitive chains
         };
@@ -86,6 +90,25 @@ namespace ompl_mm
         /** Removes one round trip if it can (trying until ptc is true); true when the path changed. */
         bool removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng,
                              const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** Ends each push reversal (ManipulationPath::pushReversals) that it can with
+            endReversal(), the last first (each tried once, until ptc is true); returns how many. */
+        unsigned int removeReversals(ManipulationPath &path, ompl::RNG &rng,
+                                     const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** Ends the reversal's earlier push where it comes nearest to where the later push leaves
+            the object, keeps the object there until the later push, and moves it from there to
+            that end with the empty-space planner's primitives (none when it is there already),
+            the robot routed around the object where its old motions meet it. True when every
+            motion of that is valid (the path then changed; its states after the later push stay
+            as they were). */
+        bool endReversal(ManipulationPath &path, const ManipulationPath::PushReversal &reversal,
+                         ompl::RNG &rng, const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** Chains the motions between consecutive states into result (reset to the first state):
+            each motion as it is when valid; else the robot routed (TransitConnector, within
+            routeIterations and until ptc is true) to the next valid state that only the robot's
+            motions lead to. False when neither works for some motion. */
+        bool routeThrough(const std::vector<ompl::base::State *> &states, Trajectory &result,
+                          unsigned int routeIterations, ompl::RNG &rng,
+                          const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Ends each push run at its earliest waypoint after which the object may stay where it
             is for the rest of the way (holdObject), the run's start first (no push at all), when
             the end still satisfies goal and the tool travels no farther; returns how many runs

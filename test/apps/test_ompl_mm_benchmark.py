@@ -21,7 +21,8 @@ RUN_LIMIT_S = 600  # every command is bounded, so a hang fails a check instead o
 MOPL_COLUMNS = ["time_sampling_s", "time_nearest_s", "time_propagate_s", "time_connect_s", "time_ik_s",
                 "time_smoothing_s", "iterations", "restarts", "clearings", "tree_vertices", "tree_edges",
                 "collision_queries", "collision_queries_free", "path_vertices", "path_length_m",
-                "primitives_transit", "primitives_push", "primitives_pickup", "primitives_transfer", "seed"]
+                "push_reversals", "primitives_transit", "primitives_push", "primitives_pickup",
+                "primitives_transfer", "seed"]
 PHYSICS_COLUMNS = ["action", "power", "smoothness", "substeps", "propagations", "reaches_goal", "seed"]
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Tests for benchmarks/ab_seeds.py: two run records count as the same result when they agree on
-every value both write but the times and the peak memory, which differ between any two runs.
-Standard library only."""
+every value both write but the times and the peak memory, which differ between any two runs; and
+push reversals counted from a path file's rows as the library counts them. Standard library only."""
 import os
 import sys
 import unittest
@@ -9,6 +9,7 @@ import unittest
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "benchmarks"))
 import ab_seeds  # noqa: E402
+from run_records import push_reversals  # noqa: E402
 
 
 def record(**changes):
@@ -29,6 +30,40 @@ class SameValues(unittest.TestCase):
 
     def test_a_key_only_one_build_writes_does_not_count(self):
         self.assertTrue(ab_seeds.same_values(record(), record(clearings=0)))
+
+
+def rows(*moves):
+    """Path-file rows of two objects, a and b, from the origin: each move is (segment, object, dx, dy)."""
+    at = {"a": [0.0, 0.0], "b": [5.0, 0.0]}
+    def row(segment, obj):
+        values = {"segment": segment, "object": obj}
+        for name, (x, y) in at.items():
+            values.update({f"{name}.x": x, f"{name}.y": y, f"{name}.z": 0.0, f"{name}.yaw": 0.0})
+        return values
+    result = [row("start", "-")]
+    for segment, obj, dx, dy in moves:
+        if obj in at:
+            at[obj] = [at[obj][0] + dx, at[obj][1] + dy]
+        result.append(row(segment, obj))
+    return result
+
+
+class PushReversals(unittest.TestCase):
+    def test_a_push_back_against_the_one_before_is_one(self):
+        self.assertEqual(push_reversals(rows(("push", "a", 1.0, 0.0), ("transit", "-", 0, 0),
+                                             ("push", "a", -0.3, 0.2))), 1)
+
+    def test_a_push_on_or_across_is_none(self):
+        self.assertEqual(push_reversals(rows(("push", "a", 1.0, 0.0), ("push", "a", 0.5, 0.0),
+                                             ("push", "a", 0.0, 1.0), ("push", "a", -0.0009, 1.0))), 0)
+
+    def test_other_objects_pushes_between_do_not_hide_it(self):
+        self.assertEqual(push_reversals(rows(("push", "a", 1.0, 0.0), ("push", "b", 1.0, 0.0),
+                                             ("push", "a", -0.5, 0.0), ("push", "b", -2.0, 0.0))), 2)
+
+    def test_a_carry_between_ends_the_comparison(self):
+        self.assertEqual(push_reversals(rows(("push", "a", 1.0, 0.0), ("transfer", "a", 0.0, 1.0),
+                                             ("push", "a", -0.5, 0.0))), 0)
 
 
 if __name__ == "__main__":

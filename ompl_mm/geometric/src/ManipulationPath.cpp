@@ -148,6 +148,43 @@ namespace ompl_mm
         return counts;
     }
 
+    std::vector<ManipulationPath::PushReversal> ManipulationPath::pushReversals() const
+    {
+        const std::vector<SegmentLabel> &segments = labels();
+        const auto *space = si_->getStateSpace()->as<ManipulationStateSpace>();
+        const auto displacement = [&](std::size_t segment, unsigned int object) -> Eigen::Vector3d
+        {
+            return space->objectPosition(states_[segment + 1], object) -
+                   space->objectPosition(states_[segment], object);
+        };
+        std::vector<PushReversal> reversals;
+        for (unsigned int object = 0; object < space->objectCount(); ++object)
+        {
+            // the object's last push segment, while nothing else has moved it since (none: past the end)
+            const std::size_t none = segments.size();
+            std::size_t previous = none;
+            for (std::size_t i = 0; i < segments.size(); ++i)
+            {
+                if (segments[i].kind != PrimitiveKind::Push || segments[i].object != static_cast<int>(object))
+                {
+                    if (space->objectMoves(states_[i], states_[i + 1], object))
+                        previous = none;
+                    continue;
+                }
+                const Eigen::Vector3d moved = displacement(i, object);
+                if (moved.norm() == 0.0)
+                    continue;
+                if (previous != none &&
+                    moved.dot(displacement(previous, object).normalized()) < -REVERSAL_TOLERANCE)
+                    reversals.push_back({object, previous, i});
+                previous = i;
+            }
+        }
+        std::sort(reversals.begin(), reversals.end(),
+                  [](const PushReversal &a, const PushReversal &b) { return a.earlier < b.earlier; });
+        return reversals;
+    }
+
     std::string ManipulationPath::checkLabels() const
     {
         try

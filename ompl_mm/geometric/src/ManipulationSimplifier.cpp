@@ -112,6 +112,7 @@ namespace ompl_mm
         {
             while (!ptc && removeRoundTrip(path, goal, rng, stop))
                 ++outcome.roundTripsRemoved;
+            outcome.reversalsRemoved = removeReversals(path, rng, stop);
             outcome.pushesShortened = shortenPushes(path, goal, rng, stop);
         }
         // windows from one primitive run's start to a later run's end: what OMPL's shortcuts cannot
@@ -266,39 +267,118 @@ namespace ompl_mm
                 si_->freeState(state);
             return false;
         }
+        // the robot's old motions meet the held object where it was pushed before
         Trajectory result(space_);
-        result.reset(held[0]);
-        bool routed = true;
-        for (std::size_t k = 0; routed && k + 1 < held.size();)
-        {
-            if (ptc)
-            {
-                routed = false;
-                break;
-            }
-            const std::optional<SegmentLabel> label = validator_->explain(held[k], held[k + 1]);
-            if (label && si_->checkMotion(held[k], held[k + 1]))
-            {
-                result.append(held[k + 1], *label);
-                ++k;
-                continue;
-            }
-            // the robot's old motion meets the held object: route it to the next valid state
-            // that only the robot's motions lead to
-            std::size_t next = k + 1;
-            while (next < held.size() && !space_->anyObjectMoves(held[k], held[next]) &&
-                   !si_->isValid(held[next]))
-                ++next;
-            routed = next < held.size() && !space_->anyObjectMoves(held[k], held[next]) &&
-                     connector_.connect(result, held[next], routeIterations, rng, ptc);
-            k = next;
-        }
+        const bool routed = routeThrough(held, result, routeIterations, rng, ptc);
         for (ompl::base::State *state : held)
             si_->freeState(state);
         if (!routed)
             return false;
         path.replace(first, last, result);
         return true;
+    }
+
+    bool ManipulationSimplifier::routeThrough(const std::vector<ompl::base::State *> &states,
+                                              Trajectory &result, unsigned int routeIterations,
+                                              ompl::RNG &rng,
+                                              const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        result.reset(states[0]);
+        for (std::size_t k = 0; k + 1 < states.size();)
+        {
+            if (ptc)
+                return false;
+            const std::optional<SegmentLabel> label = validator_->explain(states[k], states[k + 1]);
+            if (label && si_->checkMotion(states[k], states[k + 1]))
+            {
+                result.append(states[k + 1], *label);
+                ++k;
+                continue;
+            }
+            // route the robot to the next valid state that only the robot's motions lead to
+            std::size_t next = k + 1;
+            while (next < states.size() && !space_->anyObjectMoves(states[k], states[next]) &&
+                   !si_->isValid(states[next]))
+                ++next;
+            if (next == states.size() || space_->anyObjectMoves(states[k], states[next]) ||
+                !connector_.connect(result, states[next], routeIterations, rng, ptc))
+                return false;
+            k = next;
+        }
+        return true;
+    }
+
+    unsigned int ManipulationSimplifier::removeReversals(
+        ManipulationPath &path, ompl::RNG &rng, const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        // the last reversal first: a change replaces states from its earlier push on, so each
+        // reversal is tried once, those before it keeping their indices
+        unsigned int removed = 0;
+        std::size_t before = path.getStateCount();
+        while (!ptc)
+        {
+            std::optional<ManipulationPath::PushReversal> last;
+            for (const ManipulationPath::PushReversal &reversal : path.pushReversals())
+                if (reversal.earlier < before)
+                    last = reversal;
+            if (!last)
+                break;
+            if (endReversal(path, *last, rng, ptc))
+                ++removed;
+            before = last->earlier;
+        }
+        return removed;
+    }
+
+    bool ManipulationSimplifier::endReversal(ManipulationPath &path,
+                                             const ManipulationPath::PushReversal &reversal, ompl::RNG &rng,
+                                             const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        const std::size_t earlier = reversal.earlier;
+        const std::size_t later = reversal.later;
+        const unsigned int object = reversal.object;
+        const ompl::base::State *afterLater = path.getState(later + 1);
+        // the earlier push ends where it is nearest to where the later one leaves the object
+        const Eigen::Vector3d from = space_->objectPosition(path.getState(earlier), object);
+        const Eigen::Vector3d direction = space_->objectPosition(path.getState(earlier + 1), object) - from;
+        const double t = std::clamp(
+            (space_->objectPosition(afterLater, object) - from).dot(direction) / direction.squaredNorm(), 0.0,
+            1.0);
+        std::vector<ompl::base::State *> states{si_->cloneState(path.getState(earlier))};
+        if (t > 0.0)
+        {
+            states.push_back(si_->allocState());
+            space_->interpolate(path.getState(earlier), path.getState(earlier + 1), t, states.back());
+        }
+        ObjectPose held = space_->objectPose(states.back(), object);
+        // on the later push's line: the object is where it ends, and that push is dropped
+        if (samePose(held, space_->objectPose(afterLater, object)))
+        {
+            held = space_->objectPose(afterLater, object);
+            space_->setObjectPose(states.back(), object, held);
+        }
+        // the object stays there until the later push, which then starts from there
+        for (std::size_t k = earlier + 1; k <= later; ++k)
+        {
+            states.push_back(si_->cloneState(path.getState(k)));
+            space_->setObjectPose(states.back(), object, held);
+        }
+        Trajectory push(space_);
+        const EmptySpacePlanner::Outcome outcome =
+            planner_.plan(states.back(), afterLater, push, rng, ptc, true);
+        for (std::size_t k = 1; k < push.size(); ++k)
+            states.push_back(si_->cloneState(push.state(k)));
+        if (outcome == EmptySpacePlanner::Outcome::AlreadyThere)
+            states.push_back(si_->cloneState(afterLater));
+        Trajectory result(space_);
+        const bool changed = (outcome == EmptySpacePlanner::Outcome::Reached ||
+                              outcome == EmptySpacePlanner::Outcome::AlreadyThere) &&
+                             routeThrough(states, result, CONNECT_ITERATIONS, rng, ptc);
+        for (ompl::base::State *state : states)
+            si_->freeState(state);
+        if (changed)
+            path.replace(earlier, later + 1, result);
+        return changed;
     }
 
     bool ManipulationSimplifier::replanWindow(ManipulationPath &path, std::size_t first, std::size_t last,
@@ -314,7 +394,12 @@ namespace ompl_mm
             return false;
         if (toolTravel(replanned) >= path.toolPathLength(first, last) - 1e-9 || !isValid(replanned))
             return false;
-        path.replace(first, last, replanned);
+        // a chain that pushes an object on where a push outside the window brings it back is no gain
+        ManipulationPath changed(path);
+        changed.replace(first, last, replanned);
+        if (changed.pushReversals().size() > path.pushReversals().size())
+            return false;
+        path = changed;
         return true;
     }
 

@@ -79,6 +79,7 @@ namespace ompl_mm
                 .addCount("path_vertices", path.getStateCount())
                 // OMPL's own re-check of states and motions
                 .addFlag("path_valid", pathValid ? *pathValid : path.check())
+                .addCount("push_reversals", path.pushReversals().size())
                 .addRecord("primitives", primitives);
         }
         return result;

@@ -759,6 +759,7 @@ namespace ompl_mm
         {
             data.properties["path_length_m REAL"] = ompl_core::exactText(solution->toolPathLength());
             data.properties["path_vertices INTEGER"] = std::to_string(solution->getStateCount());
+            data.properties["push_reversals INTEGER"] = std::to_string(solution->pushReversals().size());
             for (const auto &[kind, count] : solution->primitiveCounts())
                 data.properties["primitives_" + kind + " INTEGER"] = std::to_string(count);
         }

@@ -1,6 +1,7 @@
-// Tests for ManipulationSimplifier: a push there and back becomes no push at all, a push ends where
-// the way no longer needs it, windows get shorter and stay valid, the same seed gives the same path,
-// and it refuses a space information without the manipulation motion validator.
+// Tests for ManipulationSimplifier: a push there and back becomes no push at all, a push back
+// against the one before is dropped or turned across it, a push ends where the way no longer needs
+// it, windows get shorter and stay valid, the same seed gives the same path, and it refuses a space
+// information without the manipulation motion validator.
 #include "ompl_mm/geometric/ManipulationSimplifier.h"
 
 #include "common/MobileBlocked.h"
@@ -85,6 +86,40 @@ namespace
             append(path, 0.0, 1.4 + STANDOFF, 0.0, 1.4, PUSH_OBJ2);
             append(path, -0.6, 1.4 + STANDOFF, 0.0, 1.4, TRANSIT);
             return path;
+        }
+
+        /** obj2 pushed 0.4 m north from (0, 1.4), the robot walks round it to the north-west and
+            pushes it back south-east to (x, 1.6), then leaves west: the push north carried it
+            0.2 m past where it is wanted. */
+        ManipulationPath pushedPastAndBack(double x)
+        {
+            const Eigen::Vector2d back = Eigen::Vector2d(x, -0.2).normalized() * STANDOFF;
+            ManipulationPath path(si_);
+            append(path, 0.0, 0.7, 0.0, 1.4, TRANSIT);
+            append(path, 0.0, 1.4 - STANDOFF, 0.0, 1.4, TRANSIT);
+            append(path, 0.0, 1.8 - STANDOFF, 0.0, 1.8, PUSH_OBJ2);
+            append(path, -0.5, 1.8 - STANDOFF, 0.0, 1.8, TRANSIT);
+            append(path, -0.5, 1.8 + STANDOFF, 0.0, 1.8, TRANSIT);
+            append(path, -back.x(), 1.8 - back.y(), 0.0, 1.8, TRANSIT);
+            append(path, x - back.x(), 1.6 - back.y(), x, 1.6, PUSH_OBJ2);
+            append(path, -0.6, 1.6 - back.y(), x, 1.6, TRANSIT);
+            return path;
+        }
+
+        /** Expects the simplifier to remove the one push reversal of path, which leaves obj2 at
+            (x, 1.6), with obj2 never north of y = 1.6 and the path's ends kept. */
+        void expectReversalRemoved(ManipulationPath &path, double x)
+        {
+            ASSERT_TRUE(path.check());
+            ASSERT_EQ(path.pushReversals().size(), 1u);
+            const ManipulationPath original = path;
+            ompl::RNG rng(3);
+            EXPECT_EQ(simplifier_.simplify(path, 0, rng, nullptr).reversalsRemoved, 1u);
+            EXPECT_TRUE(path.pushReversals().empty());
+            expectValidAndSameEnds(path, original);
+            for (std::size_t k = 0; k < path.getStateCount(); ++k)
+                EXPECT_LE(space_.objectPosition(path.getState(k), 1).y(), 1.6 + 1e-9) << "state " << k;
+            EXPECT_NEAR(space_.objectPosition(path.getState(path.getStateCount() - 1), 1).x(), x, 1e-12);
         }
 
         /** Expects path to be valid, consistently labelled, and to start and end as original. */
@@ -221,6 +256,47 @@ TEST_F(SimplifierBlocked, AReturnEndsEarlyAlsoWhenTheObjectIsPushedOnLater)
     append(path, 0.45, 0.2, 1.0, -0.1, TRANSIT);
     append(path, 0.8, 0.45, 1.0, -0.1, TRANSIT);
     expectReturnEndedAtItsSecondWaypoint(path);
+}
+
+TEST_F(Simplifier, PushReversalsAreThePushesBackAgainstThePushBefore)
+{
+    const std::vector<ManipulationPath::PushReversal> reversals = pushedPastAndBack(0.0).pushReversals();
+    ASSERT_EQ(reversals.size(), 1u);
+    EXPECT_EQ(reversals[0].object, 1u);
+    EXPECT_EQ(reversals[0].earlier, 1u);
+    EXPECT_EQ(reversals[0].later, 5u);
+    EXPECT_EQ(pushedPastAndBack(0.2).pushReversals().size(), 1u);
+    EXPECT_EQ(roundTrip().pushReversals().size(), 1u) << "a round trip is a reversal";
+    EXPECT_TRUE(pushedNorth({1.55, 1.7, 1.85}).pushReversals().empty()) << "one push in steps";
+
+    // a push east after the push north that goes back by less than the tolerance reverses nothing,
+    // one that goes back by more does
+    for (const double back : {0.9, 1.1})
+    {
+        const Eigen::Vector2d to(0.3, 1.8 - back * ManipulationPath::REVERSAL_TOLERANCE);
+        const Eigen::Vector2d behind = (to - Eigen::Vector2d(0.0, 1.8)).normalized() * STANDOFF;
+        ManipulationPath across = pushedNorth({1.8});
+        append(across, -0.5, 1.8 - STANDOFF, 0.0, 1.8, TRANSIT);
+        append(across, -behind.x(), 1.8 - behind.y(), 0.0, 1.8, TRANSIT);
+        append(across, to.x() - behind.x(), to.y() - behind.y(), to.x(), to.y(), PUSH_OBJ2);
+        ASSERT_TRUE(across.check());
+        EXPECT_EQ(across.pushReversals().size(), back < 1.0 ? 0u : 1u) << back;
+    }
+}
+
+TEST_F(Simplifier, APushBackAlongThePushBeforeIsDroppedAndThatPushEndsWhereTheObjectIsWanted)
+{
+    ManipulationPath path = pushedPastAndBack(0.0);
+    expectReversalRemoved(path, 0.0);
+    EXPECT_EQ(path.primitiveCounts().at("push"), 1u);
+}
+
+TEST_F(Simplifier, APushBackAtAnAngleBecomesAPushAcross)
+{
+    // the push north ends at (0, 1.6), nearest to where obj2 is wanted; a push east brings it there
+    ManipulationPath path = pushedPastAndBack(0.2);
+    expectReversalRemoved(path, 0.2);
+    EXPECT_EQ(path.primitiveCounts().at("push"), 2u);
 }
 
 TEST_F(Simplifier, APushNobodyNeedsIsDropped)
