@@ -350,13 +350,9 @@ namespace ompl_mm
             states.push_back(si_->allocState());
             space_->interpolate(path.getState(earlier), path.getState(earlier + 1), t, states.back());
         }
-        ObjectPose held = space_->objectPose(states.back(), object);
-        // on the later push's line: the object is where it ends, and that push is dropped
-        if (samePose(held, space_->objectPose(afterLater, object)))
-        {
-            held = space_->objectPose(afterLater, object);
-            space_->setObjectPose(states.back(), object, held);
-        }
+        // on the later push's line the object is where that push ends (to rounding, which no
+        // motion counts as moving it), and the empty-space planner below then only moves the robot
+        const ObjectPose held = space_->objectPose(states.back(), object);
         // the object stays there until the later push, which then starts from there
         for (std::size_t k = earlier + 1; k <= later; ++k)
         {
