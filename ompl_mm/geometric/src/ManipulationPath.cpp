@@ -152,17 +152,14 @@ namespace ompl_mm
     {
         const std::vector<SegmentLabel> &segments = labels();
         const auto *space = si_->getStateSpace()->as<ManipulationStateSpace>();
-        const auto displacement = [&](std::size_t segment, unsigned int object) -> Eigen::Vector3d
-        {
-            return space->objectPosition(states_[segment + 1], object) -
-                   space->objectPosition(states_[segment], object);
-        };
         std::vector<PushReversal> reversals;
         for (unsigned int object = 0; object < space->objectCount(); ++object)
         {
-            // the object's last push segment, while nothing else has moved it since (none: past the end)
+            // the object's last push segment and its direction, while nothing else has moved it
+            // since (none: past the end)
             const std::size_t none = segments.size();
             std::size_t previous = none;
+            Eigen::Vector3d previousDirection = Eigen::Vector3d::Zero();
             for (std::size_t i = 0; i < segments.size(); ++i)
             {
                 if (segments[i].kind != PrimitiveKind::Push || segments[i].object != static_cast<int>(object))
@@ -171,13 +168,14 @@ namespace ompl_mm
                         previous = none;
                     continue;
                 }
-                const Eigen::Vector3d moved = displacement(i, object);
+                const Eigen::Vector3d moved =
+                    space->objectPosition(states_[i + 1], object) - space->objectPosition(states_[i], object);
                 if (moved.norm() == 0.0)
                     continue;
-                if (previous != none &&
-                    moved.dot(displacement(previous, object).normalized()) < -REVERSAL_TOLERANCE)
+                if (previous != none && moved.dot(previousDirection) < -REVERSAL_TOLERANCE)
                     reversals.push_back({object, previous, i});
                 previous = i;
+                previousDirection = moved.normalized();
             }
         }
         std::sort(reversals.begin(), reversals.end(),
