@@ -4,8 +4,8 @@
 // query (failures included) for our IkSolver and, on the same poses, Orocos KDL's ChainIkSolverPos_NR_JL
 // and ChainIkSolverPos_LMA (KDL chains built from the same RobotModel).
 //
-// Usage: bench_ik [URDF] [--queries N] [--tip LINK] [--seed S] [--iterations N] [--damping D]
-// [--posture G]   (default: scenes/robots/kuka_lwr.urdf, 10000 queries, tip "tool", seed 1, the
+// Usage: bench_ik [URDF] [--queries N] [--tip LINK] [--seed S] [--iterations N] [--stall N]
+// [--damping D] [--posture G]   (default: scenes/robots/kuka_lwr.urdf, 10000 queries, tip "tool", seed 1, the
 // solver's own iterations, damping and posture gain). Exit status: 0 done, 2 bad input.
 #include "ompl_core/io/InputError.h"
 #include "ompl_core/run/CommandLine.h"
@@ -103,6 +103,7 @@ namespace
         long long queries{10000};  // signed, so that a negative count is caught rather than wrapped
         long long seed{1};
         long long iterations{0};                 ///< 0: the solver's default
+        std::optional<long long> stall;          ///< unset: the solver's default
         std::optional<double> damping, posture;  ///< unset: the solver's defaults
     };
 
@@ -142,6 +143,8 @@ namespace
             "random seed of the poses, in [1, 4294967295]")(
             "iterations", po::value(&options.iterations)->value_name("N"),
             "iterations of one IkSolver attempt (0 or unset: the solver's default)")(
+            "stall", po::value<long long>()->value_name("N"),
+            "IkSolver's ik_stall_iterations, 0 for never (unset: the solver's default)")(
             "damping", po::value<double>()->value_name("D"),
             "IkSolver's damping, at least 0 (unset: the solver's default)")(
             "posture", po::value<double>()->value_name("G"),
@@ -164,6 +167,12 @@ namespace
                 "--seed must be in [1, 4294967295], got " + std::to_string(options.seed));
         require(options.iterations >= 0 && options.iterations <= 4294967295LL,
                 "--iterations must be in [0, 4294967295], got " + std::to_string(options.iterations));
+        if (vm.count("stall"))
+        {
+            options.stall = vm["stall"].as<long long>();
+            require(*options.stall >= 0 && *options.stall <= 4294967295LL,
+                    "--stall must be in [0, 4294967295], got " + std::to_string(*options.stall));
+        }
         options.damping = nonNegative(vm, "damping");
         options.posture = nonNegative(vm, "posture");
         return true;
@@ -203,6 +212,8 @@ namespace
         ours.timeLimit = TIME_LIMIT;
         if (options.iterations > 0)
             ours.iterations = static_cast<unsigned int>(options.iterations);
+        if (options.stall)
+            ours.stallIterations = static_cast<unsigned int>(*options.stall);
         if (options.damping)
             ours.damping = *options.damping;
         if (options.posture)

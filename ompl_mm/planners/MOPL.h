@@ -174,6 +174,9 @@ namespace ompl_mm
         /** The rules between parameters, which no single parameter's range can state.
             @throws ompl::Exception when undefined_probability + start_value_probability exceeds 1. */
         void checkParameters() const;
+        /** True when checkParameters() reads the parameter called name (a rule it breaks is that
+            parameter's to report). */
+        static bool checksParameter(const std::string &name);
         /** OMPL's hook: the vertices and edges of both trees (tag 1: start tree, tag 2: goal tree;
             edges point in the direction of motion) and the statistics as properties. */
         void getPlannerData(ompl::base::PlannerData &data) const override;

@@ -245,6 +245,11 @@ namespace ompl_mm
             throw ompl::Exception(getName(), "undefined_probability + start_value_probability exceeds 1");
     }
 
+    bool MOPL::checksParameter(const std::string &name)
+    {
+        return name == "undefined_probability" || name == "start_value_probability";
+    }
+
     void MOPL::clear()
     {
         ob::Planner::clear();

@@ -9,6 +9,8 @@ namespace ompl_mm
         constexpr double PI = 3.14159265358979323846;
         /** Below this task error the step no longer pulls towards the middle of the joint ranges. */
         constexpr double POSTURE_ERROR = 1e-3;
+        /** An attempt whose error is still this share of what it was stallIterations before is stuck. */
+        constexpr double STALL_RATIO = 0.9;
 
         double wrapAngle(double angle)
         {
@@ -45,6 +47,10 @@ namespace ompl_mm
         params_.declareParam<bool>(
             "ik_any_yaw", [this](bool v) { anyYaw = v; }, [this] { return anyYaw; });
         params_["ik_any_yaw"].setRangeSuggestion("0,1");
+        params_.declareParam<unsigned int>(
+            "ik_stall_iterations", [this](unsigned int v) { stallIterations = v; },
+            [this] { return stallIterations; });
+        params_["ik_stall_iterations"].setRangeSuggestion("0:1:10000");
     }
 
     IkSolver::Vector6d IkSolver::taskError(const Eigen::Isometry3d &target, const Eigen::Isometry3d &current,
@@ -76,7 +82,7 @@ namespace ompl_mm
         return taskError(target, chain_.toolPose(q, base_), task).norm();
     }
 
-    bool IkSolver::attempt(const Eigen::Isometry3d &target, IkTask task,
+    bool IkSolver::attempt(const Eigen::Isometry3d &target, IkTask task, bool fromSeed,
                            const std::optional<std::chrono::steady_clock::time_point> &end)
     {
         const unsigned int n = chain_.size();
@@ -88,6 +94,16 @@ namespace ompl_mm
             const double size = error.norm();
             if (size < tolerance)
                 return true;
+            // an attempt from random joints that is stuck gives up (the errors of its last
+            // stallIterations iterations, oldest at it % stallIterations); one from the seed goes on,
+            // as its solution is the one near the seed
+            if (stallIterations > 0 && !fromSeed)
+            {
+                double &before = recentErrors_[it % stallIterations];
+                if (it >= stallIterations && size > STALL_RATIO * before)
+                    return false;
+                before = size;
+            }
             if (end && std::chrono::steady_clock::now() > *end)
                 return false;
             // the rows the task leaves free take no part in the step
@@ -142,6 +158,7 @@ namespace ompl_mm
                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                       std::chrono::duration<double>(timeLimit));
         lastIterations_ = 0;
+        recentErrors_.resize(stallIterations);
         const unsigned int n = chain_.size();
         for (unsigned int i = 0; i < n; ++i)
             work_[chain_.variable(i)] = q[chain_.variable(i)];
@@ -151,7 +168,7 @@ namespace ompl_mm
             if (a > 0)
                 for (unsigned int i = 0; i < n; ++i)
                     work_[chain_.variable(i)] = rng.uniformReal(chain_.lower(i), chain_.upper(i));
-            if (attempt(target, task, end))
+            if (attempt(target, task, a == 0, end))
             {
                 for (unsigned int i = 0; i < n; ++i)
                     q[chain_.variable(i)] = work_[chain_.variable(i)];

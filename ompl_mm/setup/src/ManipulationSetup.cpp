@@ -98,7 +98,12 @@ namespace ompl_mm
         }
         catch (const ompl::Exception &e)
         {
-            throw ompl_core::InputError(settings.back().where, e.what());
+            // the last of the settings the rule reads: the one that broke it
+            auto broke = std::find_if(settings.rbegin(), settings.rend(),
+                                      [](const ompl_core::ParameterSetting &setting)
+                                      { return MOPL::checksParameter(setting.name); });
+            throw ompl_core::InputError(broke != settings.rend() ? broke->where : settings.back().where,
+                                        e.what());
         }
     }
 

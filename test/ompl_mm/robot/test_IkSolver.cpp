@@ -1,8 +1,8 @@
 // Tests for IkSolver on the KUKA LWR-like arm: full 6-D IK of 2,000 random reachable poses from the
 // middle of the joint ranges (every answer within the limits and 1e-5 of its target, at least 99.9 %
 // solved, bounded by iterations), the 5-D task with the yaw free (whatever the target's yaw) and the
-// 3-D task, determinism, an unreachable target leaving the joints as they were, solves from the seed
-// alone (NearSeed), and the declared parameters.
+// 3-D task, determinism, an unreachable target leaving the joints as they were, restarts that give up
+// when stuck, solves from the seed alone (NearSeed), and the declared parameters.
 #include "ompl_mm/robot/IkSolver.h"
 
 #include "common/InputErrors.h"
@@ -162,7 +162,40 @@ TEST_F(LwrIk, UnreachableTargetFailsAndLeavesTheJoints)
     const std::vector<double> before = q;
     EXPECT_FALSE(solver_.solve(far, IkTask::Position3D, q.data(), restarts));
     EXPECT_EQ(q, before);
+    // the attempt from the seed runs out; those from random joints give up once stuck
+    const unsigned int stuckAfter = solver_.stallIterations + 1;
+    EXPECT_GE(solver_.lastIterations(), solver_.iterations + 20u * stuckAfter);
+    EXPECT_LT(solver_.lastIterations(), solver_.iterations + 20u * 2u * stuckAfter);
+    solver_.stallIterations = 0;
+    EXPECT_FALSE(solver_.solve(far, IkTask::Position3D, q.data(), restarts));
     EXPECT_EQ(solver_.lastIterations(), 21u * solver_.iterations) << "every attempt ran out";
+}
+
+TEST_F(LwrIk, StuckRestartsGiveUpButFewThatWouldConverge)
+{
+    // random reachable poses from random seeds, with and without giving up when stuck: as many
+    // solved, in fewer iterations
+    ompl::RNG poses(53);
+    unsigned int solved[2] = {0, 0};
+    unsigned long iterations[2] = {0, 0};
+    for (int k = 0; k < 300; ++k)
+    {
+        const std::vector<double> answer = random(poses);
+        const Eigen::Isometry3d target = chain().toolPose(answer.data(), base_);
+        const std::vector<double> seed = random(poses);
+        for (const unsigned int stall : {0u, 8u})
+        {
+            const int lane = stall == 0 ? 0 : 1;
+            solver_.stallIterations = stall;
+            solver_.restarts = 5;
+            ompl::RNG restarts(1000 + k);
+            std::vector<double> q = seed;
+            solved[lane] += solver_.solve(target, IkTask::Pose6D, q.data(), restarts) ? 1 : 0;
+            iterations[lane] += solver_.lastIterations();
+        }
+    }
+    EXPECT_GE(solved[1] + 3, solved[0]);
+    EXPECT_LT(iterations[1], iterations[0]);
 }
 
 TEST_F(LwrIk, NearSeedSolvesFromTheSeedAloneWithoutRestarts)
@@ -200,7 +233,9 @@ TEST_F(LwrIk, ParametersAreDeclaredWithRanges)
     EXPECT_FALSE(solver_.anyYaw);
     EXPECT_TRUE(params.setParam("ik_any_yaw", "1"));
     EXPECT_TRUE(solver_.anyYaw);
-    for (const char *name :
-         {"ik_tolerance", "ik_iterations", "ik_restarts", "ik_damping", "ik_time_limit", "ik_any_yaw"})
+    EXPECT_TRUE(params.setParam("ik_stall_iterations", "12"));
+    EXPECT_EQ(solver_.stallIterations, 12u);
+    for (const char *name : {"ik_tolerance", "ik_iterations", "ik_restarts", "ik_damping", "ik_time_limit",
+                             "ik_any_yaw", "ik_stall_iterations"})
         EXPECT_FALSE(params.getParam(name)->getRangeSuggestion().empty()) << name;
 }

@@ -146,11 +146,9 @@ TEST(SceneLoader, LoadsMobileBlocked)
     EXPECT_EQ(scene.primitives[1].params.at("standoff"), "0.41");
 
     EXPECT_EQ(scene.planner, "mopl");
-    const std::vector<std::pair<std::string, std::string>> params{{"connect_step", "0.05"},
-                                                                  {"vertex_step", "0.35"},
-                                                                  {"moving_object_penalty", "0.6"},
-                                                                  {"move_to_object_penalty", "0.1"},
-                                                                  {"move_to_object_factor", "1.0"}};
+    const std::vector<std::pair<std::string, std::string>> params{
+        {"connect_step", "0.05"},          {"vertex_step", "0.35"},          {"moving_object_penalty", "0.6"},
+        {"move_to_object_penalty", "0.1"}, {"move_to_object_factor", "1.0"}, {"restart_iterations", "5000"}};
     ASSERT_EQ(scene.plannerParams.size(), params.size());
     for (std::size_t i = 0; i < params.size(); ++i)
     {
