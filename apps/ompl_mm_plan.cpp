@@ -11,6 +11,7 @@
 #include "ompl_mm/io/SceneSvg.h"
 #include "ompl_mm/scene/SceneLoader.h"
 #include "ompl_mm/setup/ManipulationSetup.h"
+#include "ompl_mm/setup/MoplRace.h"
 #include "ompl_mmphys/io/PhysicsCheckRecord.h"
 #include "ompl_mmphys/primitives/PhysicsPrimitives.h"
 
@@ -33,6 +34,7 @@ namespace
         std::string path;       ///< path file, empty for none
         bool simulate{false};   ///< check the plan in physics
         std::string pushModel;  ///< the model every push primitive takes, empty: the scene's
+        long long threads{1};   ///< MOPL searches racing (signed, so that a negative count is caught)
     };
 
     bool parseOptions(int argc, char **argv, Options &options, int &exitCode)
@@ -45,7 +47,10 @@ namespace
             "simulated objects, translucent, beside the planned ones)")(
             "push-model", po::value(&options.pushModel),
             "give every push primitive of the scene this model: kinematic, or physics (each push "
-            "simulated in ODE while planning)");
+            "simulated in ODE while planning)")(
+            "threads", po::value(&options.threads)->default_value(options.threads)->value_name("N"),
+            "MOPL searches racing, one thread each (1 to 64): the one that solves in the fewest "
+            "iterations wins, so a seed and N give the same plan whatever the timing");
         if (!apps::parseCommandLine(
                 argc, argv,
                 "Usage: ompl_mm_plan SCENE.xml [options]\n"
@@ -56,14 +61,18 @@ namespace
                 options.common, exitCode))
             return false;
         ompl_mm::ManipulationSetup::plannerRegistry().require(options.common.planner);
+        if (options.threads < 1 || options.threads > ompl_mm::MoplRace::MAX_SEARCHES)
+            throw ompl_core::InputError("--threads must be 1 to " +
+                                        std::to_string(ompl_mm::MoplRace::MAX_SEARCHES) + ", got " +
+                                        std::to_string(options.threads));
         return true;
     }
 
-    void printSummary(const ompl_mm::Scene &scene, const ompl_mm::ManipulationSetup &setup,
-                      const Options &options)
+    void printSummary(const ompl_mm::Scene &scene, const ompl_mm::PlanningRun &run, const Options &options)
     {
-        const bool solved = setup.getProblemDefinition()->hasExactSolution();
-        const double time = setup.getLastPlanComputationTime();
+        const ompl_mm::ManipulationSetup &setup = run.setup();
+        const bool solved = run.solved();
+        const double time = run.planningTime();
         std::cout << std::fixed << std::setprecision(3) << "scene " << scene.name << ": "
                   << (solved ? "solved" : "not solved") << " in " << time << " s (planner "
                   << options.common.planner << ", seed " << options.common.seed << ")\n";
@@ -80,7 +89,9 @@ namespace
         if (!setup.mopl())
             return;  // MOPL's statistics; another planner's are in its planner data (--json)
         const ompl_mm::MOPLStatistics &stats = setup.mopl()->statistics();
-        const double share = time > 0.0 ? 100.0 / time : 0.0;
+        // shares of the search's own time (a race's winner planned for part of the race)
+        const double own = setup.getLastPlanComputationTime();
+        const double share = own > 0.0 ? 100.0 / own : 0.0;
         std::cout << std::setprecision(1) << "  search: " << stats.iterations << " iterations, "
                   << stats.restarts << " restarts, " << stats.collisionQueries
                   << " collision queries; time in nearest neighbour " << stats.nearestTime * share
@@ -116,13 +127,13 @@ namespace
         ompl_mm::Scene scene = ompl_mm::loadScene(options.common.scene);
         if (!options.pushModel.empty())
             scene.setPushModel(options.pushModel);
-        const auto request = options.common.request<ompl_mm::PlanningRequest>();
+        auto request = options.common.request<ompl_mm::PlanningRequest>();
+        request.threads = static_cast<unsigned int>(options.threads);
         ompl_mm::PlanningRun &run = apps::keepUntilExit(std::make_unique<ompl_mm::PlanningRun>(
             scene, request, loading.lap(), ompl_mmphys::physicsPrimitiveFactory()));
-        ompl_mm::ManipulationSetup &setup = run.setup();
         if (options.common.listParams)
         {
-            options.common.printParameters(*setup.getPlanner());
+            options.common.printParameters(*run.setup().getPlanner());
             return 0;
         }
         // open the outputs first: a bad path should not cost a whole planning run
@@ -135,7 +146,8 @@ namespace
         // the checks: the run's re-check of the path, the summary, the files; the JSON last, so
         // that its "checks" phase holds all of them but its own writing
         const bool solved = run.solved();
-        printSummary(scene, setup, options);
+        const ompl_mm::ManipulationSetup &setup = run.setup();  // a race's winner
+        printSummary(scene, run, options);
         std::optional<ompl_mmphys::PhysicsCheck> check;
         if (options.simulate && solved)
             check = checkInPhysics(run);

@@ -22,6 +22,9 @@ namespace ompl_mm
         std::uint32_t seed{1};                                ///< OMPL's and MOPL's random seed
         double timeLimit{-1.0};                               ///< seconds; not positive: the scene's
         std::vector<ompl_core::ParameterSetting> parameters;  ///< planner parameters, after the scene's
+        /** MOPL searches racing, one thread each (MoplRace); 1, the default, is one search in the
+            calling thread. */
+        unsigned int threads{1};
     };
 
     /** A planning run: seeds OMPL, builds the scene's ManipulationSetup (an impossible goal is thrown
@@ -29,15 +32,18 @@ namespace ompl_mm
         solve() sets it up, reseeds OMPL as the benchmark tool does, solves within the time limit
         (every step polls it: MOPL's and the motion checks') and re-checks the solution once with
         OMPL's PathGeometric::check(). The same scene, request and seed give the same path and the
-        same record. request() has the scene's planner when the request named none. Not copyable: it
-        owns its setup. */
+        same record. request() has the scene's planner when the request named none. With
+        request.threads above 1, MOPL searches race (MoplRace), each on its own setup, seeded
+        MoplRace::seedOf(seed, index); setup() is then the winner's, and the record's time is the
+        race's. Not copyable: it owns its setups. */
     class PlanningRun : public ompl_core::SetupRun<ManipulationSetup, PlanningRequest>
     {
     public:
         /** Builds the run (the setup copies scene); loadSeconds is the time the caller spent loading the
            scene (the record's "load" phase); factory builds the scene's primitives. @throws
            ompl_core::InputError for a fault of the scene (its line), an unknown planner or a bad parameter
-           (where the setting came from). */
+           (where the setting came from), or threads out of [1, MoplRace::MAX_SEARCHES] or above 1 for
+           a planner other than MOPL. */
         PlanningRun(const Scene &scene, PlanningRequest request, double loadSeconds = 0.0,
                     const PrimitiveFactory &factory = PrimitiveFactory());
 
@@ -47,6 +53,8 @@ namespace ompl_mm
 
         /** The time limit in seconds: the request's, else the scene's. */
         double timeLimit() const;
+        /** Seconds solve() planned: the planner's planning time, or a race's wall time. */
+        double planningTime() const;
         /** Whether solve() found an exact solution. */
         bool solved() const;
         /** OMPL's check() of the solution, made by solve(); nothing without a solution. */
@@ -57,6 +65,12 @@ namespace ompl_mm
         ompl_core::RunResult record() const;
 
     private:
+        /** Races setup_ and the rivals within termination; the winner becomes setup_. */
+        void race(const ompl::base::PlannerTerminationCondition &termination);
+
         std::optional<bool> pathValid_;
+        /** The other searches of a race (request.threads - 1); after solve() the winner is setup_. */
+        std::vector<std::unique_ptr<ManipulationSetup>> rivals_;
+        double raceSeconds_{0.0};  ///< wall time of a race's solve
     };
 }  // namespace ompl_mm

@@ -268,6 +268,22 @@ expect_bad_option "--seed -1" "--seed" "$scene" --seed -1
 expect_bad_option "--seed 2^32" "--seed" "$scene" --seed 4294967296
 expect_bad_option "--time-limit -1" "--time-limit" "$scene" --time-limit -1
 expect_bad_option "--planner foo" "foo" "$scene" --planner foo
+expect_bad_option "--threads 0" "--threads must be 1 to 64, got 0" "$scene" --threads 0
+expect_bad_option "--threads for OMPL's planner" "threads above 1 race MOPL searches; planner 'rrt'" \
+    "$scene" --threads 2 --planner rrt
+race1=$scratch/race1.txt
+race2=$scratch/race2.txt
+race_json=$scratch/race.json
+run race1 "$scene" --seed 87 --threads 2 --path "$race1" --json "$race_json"
+run race2 "$scene" --seed 87 --threads 2 --path "$race2"
+if [ $status -eq 0 ] && [ -s "$race1" ] && cmp -s "$race1" "$race2" &&
+    python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if d["solved"] and d["path_valid"] else 1)' \
+        "$race_json" 2>/dev/null; then
+    ok "--threads 2: a race of two searches gives the same valid path twice"
+else
+    not_ok "--threads 2: a race of two searches gives the same valid path twice" "$(outputs)"
+fi
+
 restarts_json=$scratch/restarts.json
 run param_restarts "$scene" --seed 1 --time-limit 20 --param restart_iterations=50 --json "$restarts_json"
 if python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if d["stats"]["restarts"] >= 1 else 1)' \

@@ -5,8 +5,11 @@
 #include "ompl_mm/base/StepTermination.h"
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 #include "ompl_mm/io/ManipulationRunResult.h"
+#include "ompl_mm/setup/MoplRace.h"
 
 #include <ompl/util/Console.h>
+
+#include <chrono>
 
 namespace ompl_mm
 {
@@ -25,6 +28,21 @@ namespace ompl_mm
         setup_->applyParameters(request_.parameters);
         if (const std::shared_ptr<MOPL> mopl = setup_->mopl())
             mopl->setSeed(static_cast<std::uint_fast32_t>(request_.seed));
+        if (request_.threads < 1 || request_.threads > MoplRace::MAX_SEARCHES)
+            throw ompl_core::InputError("threads must be 1 to " + std::to_string(MoplRace::MAX_SEARCHES) +
+                                        ", got " + std::to_string(request_.threads));
+        if (request_.threads > 1 && !setup_->mopl())
+            throw ompl_core::InputError("threads above 1 race MOPL searches; planner '" + request_.planner +
+                                        "' plans in one thread");
+        for (unsigned int index = 1; index < request_.threads; ++index)
+        {
+            auto rival = std::make_unique<ManipulationSetup>(scene, factory);
+            if (request_.planner != scene.planner)
+                rival->selectPlanner(request_.planner);
+            rival->applyParameters(request_.parameters);
+            rival->mopl()->setSeed(MoplRace::seedOf(request_.seed, index));
+            rivals_.push_back(std::move(rival));
+        }
     }
 
     double PlanningRun::timeLimit() const
@@ -49,7 +67,10 @@ namespace ompl_mm
             if (auto validator = std::dynamic_pointer_cast<ManipulationMotionValidator>(
                     setup_->getSpaceInformation()->getMotionValidator()))
                 bounded.emplace(*validator, inner.condition());
-            setup_->solve(termination);
+            if (rivals_.empty())
+                setup_->solve(termination);
+            else
+                race(termination);
         }
         phases_.solve = phases_.lap();
         if (solved())
@@ -58,6 +79,29 @@ namespace ompl_mm
             if (!*pathValid_)
                 OMPL_ERROR("PlanningRun: the solution failed OMPL's path re-check");
         }
+    }
+
+    void PlanningRun::race(const ompl::base::PlannerTerminationCondition &termination)
+    {
+        std::vector<ManipulationSetup *> setups{setup_.get()};
+        std::vector<std::optional<ManipulationMotionValidator::TerminationScope>> bounded(rivals_.size());
+        for (std::size_t k = 0; k < rivals_.size(); ++k)
+        {
+            setups.push_back(rivals_[k].get());
+            if (auto validator = std::dynamic_pointer_cast<ManipulationMotionValidator>(
+                    rivals_[k]->getSpaceInformation()->getMotionValidator()))
+                bounded[k].emplace(*validator, termination);
+        }
+        const auto start = std::chrono::steady_clock::now();
+        const int winner = MoplRace::solve(setups, termination);
+        raceSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (winner > 0)
+            std::swap(setup_, rivals_[static_cast<std::size_t>(winner) - 1]);
+    }
+
+    double PlanningRun::planningTime() const
+    {
+        return rivals_.empty() ? setup_->getLastPlanComputationTime() : raceSeconds_;
     }
 
     bool PlanningRun::solved() const
@@ -69,6 +113,8 @@ namespace ompl_mm
     {
         const ompl_core::RunDescription run{setup_->model()->scene().name, request_.planner, request_.seed,
                                             timeLimit()};
-        return withPhases(manipulationRunResult(run, *setup_, pathValid_));
+        ompl_core::RunResult result = manipulationRunResult(run, *setup_, pathValid_);
+        result.time = planningTime();
+        return withPhases(std::move(result));
     }
 }  // namespace ompl_mm

@@ -1,6 +1,7 @@
 // Tests for PlanningRun: a run of MOBILE BLOCKED solves and re-checks its path; the same request
 // gives the same record (times aside); the scene's planner is the default; an impossible goal is an
-// input error at its line; a stop that holds from the start ends the run unsolved.
+// input error at its line; a stop that holds from the start ends the run unsolved; a race of searches
+// (threads) repeats per seed and thread count, and its bad requests are input errors.
 #include "ompl_mm/io/PlanningRun.h"
 
 #include "common/MobileBlocked.h"
@@ -80,4 +81,36 @@ TEST(PlanningRun, AStopThatHoldsFromTheStartEndsTheRunUnsolved)
     EXPECT_FALSE(run.solved());
     EXPECT_FALSE(run.pathValid().has_value());
     EXPECT_FALSE(run.record().solved);
+}
+
+TEST(PlanningRun, ARaceOfSearchesGivesTheSameRecordForTheSameSeedAndThreads)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    PlanningRequest request = seeded(87);
+    request.threads = 2;
+    PlanningRun first(mobileBlockedScene(), request);
+    first.solve(NEVER_STOP);
+    PlanningRun second(mobileBlockedScene(), request);
+    second.solve(NEVER_STOP);
+    ASSERT_TRUE(first.solved());
+    ASSERT_TRUE(first.pathValid().has_value());
+    EXPECT_TRUE(*first.pathValid());
+    EXPECT_EQ(ompl_core::test::firstDifferenceBesidesTimes(first.record().details, second.record().details),
+              "");
+    EXPECT_EQ(first.record().time, first.planningTime());
+}
+
+TEST(PlanningRun, ThreadsOutOfRangeOrForAnotherPlannerAreInputErrors)
+{
+    PlanningRequest request = seeded(1);
+    request.threads = 0;
+    EXPECT_TRUE(contains(inputErrorOf([&] { PlanningRun run(mobileBlockedScene(), request); }),
+                         "threads must be 1 to 64, got 0"));
+    request.threads = 65;
+    EXPECT_TRUE(contains(inputErrorOf([&] { PlanningRun run(mobileBlockedScene(), request); }),
+                         "threads must be 1 to 64, got 65"));
+    request.threads = 2;
+    request.planner = "rrtconnect";
+    EXPECT_TRUE(contains(inputErrorOf([&] { PlanningRun run(mobileBlockedScene(), request); }),
+                         "threads above 1 race MOPL searches; planner 'rrtconnect'"));
 }
