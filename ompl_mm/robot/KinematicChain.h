@@ -58,14 +58,18 @@ namespace ompl_mm
         struct ChainJoint
         {
             Eigen::Isometry3d
-                before;             ///< from the previous moving joint's frame (or the root) to this joint's
-            Eigen::Vector3d axis;   ///< unit axis in this joint's frame
-            bool prismatic;         ///< slides instead of turning
-            bool continuous;        ///< turns without limits
-            unsigned int variable;  ///< index in the robot's joint vector
-            double lower, upper;    ///< limits
-            int alignedAxis{-1};    ///< 0, 1, 2 when axis is +-x, +-y, +-z; -1 for any other axis
+                before;              ///< from the previous moving joint's frame (or the root) to this joint's
+            Eigen::Vector3d axis;    ///< unit axis in this joint's frame
+            bool prismatic;          ///< slides instead of turning
+            bool continuous;         ///< turns without limits
+            unsigned int variable;   ///< index in the robot's joint vector
+            double lower, upper;     ///< limits
+            int alignedAxis{-1};     ///< 0, 1, 2 when axis is +-x, +-y, +-z; -1 for any other axis
+            bool turnsBefore{true};  ///< before has a rotation (most URDF joint origins have none)
         };
+
+        /** frame * joint.before, the rotation product left out when there is none. */
+        static void advance(Eigen::Isometry3d &frame, const ChainJoint &joint);
 
         /** Moves frame (which ends at joint's frame) by the joint's motion for value q: a turn
             about an axis along x, y or z changes two columns of the rotation only. */

@@ -39,10 +39,18 @@ namespace ompl_mm
             for (int k = 0; k < 3; ++k)
                 if (std::abs(joint.axis[k]) == 1.0)
                     chainJoint.alignedAxis = k;
+            chainJoint.turnsBefore = !pending.linear().isIdentity(0.0);
             joints_.push_back(chainJoint);
             pending.setIdentity();
         }
         after_ = pending * tool;
+    }
+
+    void KinematicChain::advance(Eigen::Isometry3d &frame, const ChainJoint &joint)
+    {
+        frame.translation() += frame.linear() * joint.before.translation();
+        if (joint.turnsBefore)
+            frame.linear() = frame.linear() * joint.before.linear();
     }
 
     void KinematicChain::move(Eigen::Isometry3d &frame, const ChainJoint &joint, double q)
@@ -75,7 +83,7 @@ namespace ompl_mm
         Eigen::Isometry3d frame = base;
         for (const ChainJoint &joint : joints_)
         {
-            frame = frame * joint.before;
+            advance(frame, joint);
             move(frame, joint, q[joint.variable]);
         }
         return frame * after_;
@@ -90,7 +98,7 @@ namespace ompl_mm
         for (std::size_t i = 0; i < joints_.size(); ++i)
         {
             const ChainJoint &joint = joints_[i];
-            frame = frame * joint.before;
+            advance(frame, joint);
             jacobian.col(static_cast<Eigen::Index>(i)).head<3>() = frame.translation();
             jacobian.col(static_cast<Eigen::Index>(i)).tail<3>() = frame.linear() * joint.axis;
             move(frame, joint, q[joint.variable]);
