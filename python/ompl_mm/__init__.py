@@ -17,6 +17,7 @@ For a loop of one's own, the OMPL-level objects, named as in C++:
         path = ompl_mm.Path(setup.getSolutionPath())
 """
 import copy
+import functools
 
 from ompl_core import InputError, RunResult, solved_run
 from ._ompl_mm import (ManipulationPath, ManipulationSetup, Planner, PlannerStatus, PlanningRun, Scene, load_scene,
@@ -58,17 +59,19 @@ class PlanResult(RunResult):
         self.run.write_svg(str(file))
 
 
-def plan(scene, planner="mopl", seed=1, time_limit=60.0, params=None, simulate=False, push_model=None):
+def plan(scene, planner="mopl", seed=1, time_limit=60.0, params=None, simulate=False, push_model=None,
+         threads=1):
     """Plans scene (a Scene or a scene file's path) with the registered planner (MOPL by default),
     random seed `seed` and `time_limit` seconds; `params` maps planner parameter names to values;
     `simulate` executes a solution in physics as ompl_mm_plan --simulate does; `push_model`
     ('kinematic' or 'physics', None: the scene's) is the model of every push, as ompl_mm_plan
-    --push-model gives it (a Scene passed in is left as it is). The GIL is released while planning;
-    Ctrl-C stops the planner and raises KeyboardInterrupt."""
+    --push-model gives it (a Scene passed in is left as it is); `threads` MOPL searches race, as
+    ompl_mm_plan --threads (the same plan per seed and thread count). The GIL is released while
+    planning; Ctrl-C stops the planner and raises KeyboardInterrupt."""
     if isinstance(scene, str):
         scene = load_scene(scene)
     if push_model is not None:
         scene = copy.copy(scene)
         scene.set_push_model(push_model)
-    run = solved_run(PlanningRun, scene, planner, seed, time_limit, params)
+    run = solved_run(functools.partial(PlanningRun, threads=threads), scene, planner, seed, time_limit, params)
     return PlanResult(run, f"{scene.name} · {planner} · seed {seed}", simulate)

@@ -329,6 +329,21 @@ namespace ompl_python
         out.commit();
     }
 
+    /** The Request of a planning run from Python's arguments: planner, seed, time limit and the
+        parameters (name -> value, named "params['name']" in errors). */
+    template <typename Request>
+    Request requestOf(const std::string &planner, std::uint32_t seed, double timeLimit,
+                      const std::map<std::string, pybind11::object> &params)
+    {
+        Request request;
+        request.planner = planner;
+        request.seed = seed;
+        request.timeLimit = timeLimit;
+        for (const auto &[name, value] : params)
+            request.parameters.push_back({name, parameterText(value), {"params['" + name + "']", 0}});
+        return request;
+    }
+
     /** Binds Run, the planning run of one library (built from a Scene and a Request), as the class
         PlanningRun of module m, with what the runs of both libraries have: the constructor from
         (scene, planner, seed, time_limit, params: name -> value, named "params['name']" in errors), solve()
@@ -344,19 +359,9 @@ namespace ompl_python
     {
         namespace py = pybind11;
         return py::class_<Run>(m, "PlanningRun", doc)
-            .def(py::init(
-                     [makeRun](const Scene &scene, const std::string &planner, std::uint32_t seed,
-                               double timeLimit, const std::map<std::string, py::object> &params)
-                     {
-                         Request request;
-                         request.planner = planner;
-                         request.seed = seed;
-                         request.timeLimit = timeLimit;
-                         for (const auto &[name, value] : params)
-                             request.parameters.push_back(
-                                 {name, parameterText(value), {"params['" + name + "']", 0}});
-                         return makeRun(scene, std::move(request));
-                     }),
+            .def(py::init([makeRun](const Scene &scene, const std::string &planner, std::uint32_t seed,
+                                    double timeLimit, const std::map<std::string, py::object> &params)
+                          { return makeRun(scene, requestOf<Request>(planner, seed, timeLimit, params)); }),
                  py::arg("scene"), py::arg("planner"), py::arg("seed"), py::arg("time_limit"),
                  py::arg("params"))
             .def(

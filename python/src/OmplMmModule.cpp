@@ -163,13 +163,24 @@ PYBIND11_MODULE(_ompl_mm, m)
     ompl_python::bindSetupMethods(
         setup, static_cast<ompl_python::PlannerHandle::ApplyParameters>(&ManipulationSetup::applyParameters));
 
+    const auto makeRun = [](const Scene &scene, PlanningRequest request)
+    {
+        return std::make_unique<PlanningRun>(scene, std::move(request), 0.0,
+                                             ompl_mmphys::physicsPrimitiveFactory());
+    };
     ompl_python::bindPlanningRun<PlanningRun, PlanningRequest, Scene>(
-        m, "One planning run as ompl_mm_plan makes it: same seed, same path and record.",
-        [](const Scene &scene, PlanningRequest request)
-        {
-            return std::make_unique<PlanningRun>(scene, std::move(request), 0.0,
-                                                 ompl_mmphys::physicsPrimitiveFactory());
-        })
+        m, "One planning run as ompl_mm_plan makes it: same seed, same path and record.", makeRun)
+        .def(py::init(
+                 [makeRun](const Scene &scene, const std::string &planner, std::uint32_t seed,
+                           double timeLimit, const std::map<std::string, py::object> &params,
+                           unsigned int threads)
+                 {
+                     auto request = ompl_python::requestOf<PlanningRequest>(planner, seed, timeLimit, params);
+                     request.threads = threads;
+                     return makeRun(scene, std::move(request));
+                 }),
+             py::arg("scene"), py::arg("planner"), py::arg("seed"), py::arg("time_limit"), py::arg("params"),
+             py::arg("threads"), "A run of `threads` MOPL searches racing, as ompl_mm_plan --threads.")
         .def(
             "simulate",
             [](PlanningRun &run)

@@ -76,6 +76,17 @@ def test_the_same_seed_gives_the_same_result():
     assert numpy.array_equal(first.path.states, second.path.states)
 
 
+def test_a_race_of_two_searches_gives_the_same_result_twice():
+    scene = ompl_mm.load_scene(scene_path("mobile_blocked"))
+    first, second = ompl_mm.plan(scene, seed=87, threads=2), ompl_mm.plan(scene, seed=87, threads=2)
+    assert first.solved and first.record["path_valid"]
+    assert without_times(first.record) == without_times(second.record)
+    assert numpy.array_equal(first.path.states, second.path.states)
+    with pytest.raises(ompl_core.InputError) as error:
+        ompl_mm.plan(scene, threads=0)
+    assert "threads must be 1 to 64" in str(error.value)
+
+
 def test_a_scene_path_may_be_given_as_text():
     assert ompl_mm.plan(scene_path("mobile_blocked"), seed=1).solved
 
