@@ -13,6 +13,19 @@
 
 namespace ompl_mm
 {
+    namespace
+    {
+        /** Makes setup's motion checks stop at condition while scope lives (when its validator is
+            a ManipulationMotionValidator). */
+        void boundChecks(ManipulationSetup &setup, const ompl::base::PlannerTerminationCondition &condition,
+                         std::optional<ManipulationMotionValidator::TerminationScope> &scope)
+        {
+            if (auto validator = std::dynamic_pointer_cast<ManipulationMotionValidator>(
+                    setup.getSpaceInformation()->getMotionValidator()))
+                scope.emplace(*validator, condition);
+        }
+    }  // namespace
+
     PlanningRun::PlanningRun(const Scene &scene, PlanningRequest request, double loadSeconds,
                              const PrimitiveFactory &factory)
         : SetupRun(std::move(request), loadSeconds)
@@ -64,9 +77,7 @@ namespace ompl_mm
         {
             const StepTermination inner(termination);
             std::optional<ManipulationMotionValidator::TerminationScope> bounded;
-            if (auto validator = std::dynamic_pointer_cast<ManipulationMotionValidator>(
-                    setup_->getSpaceInformation()->getMotionValidator()))
-                bounded.emplace(*validator, inner.condition());
+            boundChecks(*setup_, inner.condition(), bounded);
             if (rivals_.empty())
                 setup_->solve(termination);
             else
@@ -88,9 +99,7 @@ namespace ompl_mm
         for (std::size_t k = 0; k < rivals_.size(); ++k)
         {
             setups.push_back(rivals_[k].get());
-            if (auto validator = std::dynamic_pointer_cast<ManipulationMotionValidator>(
-                    rivals_[k]->getSpaceInformation()->getMotionValidator()))
-                bounded[k].emplace(*validator, termination);
+            boundChecks(*rivals_[k], termination, bounded[k]);
         }
         const auto start = std::chrono::steady_clock::now();
         const int winner = MoplRace::solve(setups, termination);
