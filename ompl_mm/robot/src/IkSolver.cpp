@@ -1,5 +1,7 @@
 #include "ompl_mm/robot/IkSolver.h"
 
+#include <Eigen/Cholesky>
+
 #include <cmath>
 
 namespace ompl_mm
@@ -133,7 +135,13 @@ namespace ompl_mm
             }
             else
                 step_.setZero();
-            step_.noalias() += jacobian_.transpose() * normal.ldlt().solve(residual);
+            // with damping the matrix is positive definite and Cholesky needs no pivoting; without,
+            // it may be singular, which LDLT's pivoting copes with
+            const Eigen::LLT<Eigen::Matrix<double, 6, 6>> cholesky(normal);
+            if (cholesky.info() == Eigen::Success)
+                step_.noalias() += jacobian_.transpose() * cholesky.solve(residual);
+            else
+                step_.noalias() += jacobian_.transpose() * normal.ldlt().solve(residual);
             const double largest = step_.cwiseAbs().maxCoeff();
             if (largest > maxStep)
                 step_ *= maxStep / largest;

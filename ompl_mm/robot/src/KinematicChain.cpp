@@ -1,5 +1,7 @@
 #include "ompl_mm/robot/KinematicChain.h"
 
+#include "ompl_mm/robot/AxisTurn.h"
+
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
@@ -36,9 +38,7 @@ namespace ompl_mm
                                   static_cast<unsigned int>(joint.variable),
                                   joint.lower,
                                   joint.upper};
-            for (int k = 0; k < 3; ++k)
-                if (std::abs(joint.axis[k]) == 1.0)
-                    chainJoint.alignedAxis = k;
+            chainJoint.alignedAxis = alignedAxisOf(joint.axis);
             chainJoint.turnsBefore = !pending.linear().isIdentity(0.0);
             joints_.push_back(chainJoint);
             pending.setIdentity();
@@ -60,22 +60,7 @@ namespace ompl_mm
             frame.translation() += frame.linear() * (q * joint.axis);
             return;
         }
-        if (joint.alignedAxis < 0)
-        {
-            frame.linear() = frame.linear() * Eigen::AngleAxisd(q, joint.axis).toRotationMatrix();
-            return;
-        }
-        // a turn about +-e_k mixes the two other columns of the rotation
-        const int k = joint.alignedAxis;
-        const int a = (k + 1) % 3;
-        const int b = (k + 2) % 3;
-        const double angle = joint.axis[k] > 0.0 ? q : -q;
-        const double c = std::cos(angle);
-        const double s = std::sin(angle);
-        auto rotation = frame.linear();
-        const Eigen::Vector3d columnA = rotation.col(a);
-        rotation.col(a) = c * columnA + s * rotation.col(b);
-        rotation.col(b) = c * rotation.col(b) - s * columnA;
+        turnAbout(frame.linear(), joint.axis, joint.alignedAxis, q);
     }
 
     Eigen::Isometry3d KinematicChain::toolPose(const double *q, const Eigen::Isometry3d &base) const

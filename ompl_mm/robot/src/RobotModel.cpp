@@ -2,6 +2,7 @@
    drops) for messages and the file order of joints; the tree is then flattened parents first. */
 #include "ompl_mm/robot/RobotModel.h"
 
+#include "ompl_mm/robot/AxisTurn.h"
 #include "ompl_mm/robot/MeshFile.h"
 
 #include <tinyxml2.h>
@@ -395,7 +396,7 @@ namespace ompl_mm
                     break;
                 case Joint::Type::Revolute:
                 case Joint::Type::Continuous:
-                    transform.rotate(Eigen::AngleAxisd(value, joint.axis));
+                    turnAbout(transform.linear(), joint.axis, alignedAxisOf(joint.axis), value);
                     break;
             }
             return transform;
