@@ -6,10 +6,14 @@ extras are placed where they block the way (the gap to the nearest obstacle or o
 than the robot, so it cannot pass between them), the other half anywhere free. Each scene is
 planned over several seeds, one ompl_mm_plan process per run; the report gives per K the success,
 the median, mean and max planning time, the peak memory of the process and where the time went.
+A dense family: --radius for smaller extras and --region (repeatable) to pack them, in turn, into
+rectangles of the floor, anywhere free there, instead of across the whole floor.
 Standard library only.
 
-Example (the generated scenes go to out/clutter/; without clearing: --param clear_probability=0):
+Examples (the generated scenes go to out/clutter/; without clearing: --param clear_probability=0):
   benchmarks/clutter.py --counts 0 4 8 12 16 --placements 2 --seeds 5 --markdown out/clutter.md
+  benchmarks/clutter.py --counts 16 32 --radius 0.08 --length 0.3 \
+      --region -2.5 0.5 -0.5 2.5 --region 0.5 -2.5 2.5 -0.5     (MOBILE BLOCKED's two side regions)
 """
 import argparse
 import math
@@ -22,7 +26,7 @@ import xml.etree.ElementTree as ET
 
 from run_records import check_binary, run_app
 
-# The extras: MOBILE BLOCKED's cylinders.
+# The extras by default: MOBILE BLOCKED's cylinders.
 RADIUS = 0.2
 LENGTH = 0.5
 # Floor margin kept free around the robot's start and goal and the goal objects' targets, metres.
@@ -70,24 +74,29 @@ class Floor:
         gaps += [math.hypot(x - ox, y - oy) - r - orad for ox, oy, orad in self.discs]
         return min(gaps)
 
-    def place(self, rng, blocking):
-        """A free spot for one more disc of RADIUS (touching nothing): one that leaves the robot no
-        way between it and its nearest neighbour when blocking, else any."""
+    def place(self, rng, radius, blocking, region=None):
+        """A free spot for one more disc of radius (touching nothing): within region (x min, y min,
+        x max, y max) when given, anywhere free there; else one that leaves the robot no way between
+        it and its nearest neighbour when blocking, else any."""
+        low = [max(self.low[0], region[0]), max(self.low[1], region[1])] if region else self.low
+        high = [min(self.high[0], region[2]), min(self.high[1], region[3])] if region else self.high
         for _ in range(PLACEMENT_TRIES):
-            x = rng.uniform(self.low[0] + RADIUS, self.high[0] - RADIUS)
-            y = rng.uniform(self.low[1] + RADIUS, self.high[1] - RADIUS)
-            if any(math.hypot(x - cx, y - cy) < KEEP_CLEAR + RADIUS for cx, cy in self.clear):
+            x = rng.uniform(low[0] + radius, high[0] - radius)
+            y = rng.uniform(low[1] + radius, high[1] - radius)
+            if any(math.hypot(x - cx, y - cy) < KEEP_CLEAR + radius for cx, cy in self.clear):
                 continue
-            gap = self.gap(x, y, RADIUS)
-            if gap >= MIN_GAP and (gap < self.robot_diameter or not blocking):
-                self.discs.append((x, y, RADIUS))
+            gap = self.gap(x, y, radius)
+            if gap >= MIN_GAP and (region or gap < self.robot_diameter or not blocking):
+                self.discs.append((x, y, radius))
                 return x, y
-        sys.exit(f"no free spot for {len(self.discs) + 1} objects after {PLACEMENT_TRIES} tries")
+        where = f" in region {' '.join(f'{v:g}' for v in region)}" if region else ""
+        sys.exit(f"no free spot{where} for {len(self.discs) + 1} objects after {PLACEMENT_TRIES} tries")
 
 
-def make_scene(base, count, placement, robot_radius, directory):
-    """Writes the base scene with count extras of placement number `placement`; returns its path
-    and the dimension of its state space (the robot's joints, and x, y, z, yaw per object)."""
+def make_scene(base, count, placement, robot_radius, directory, radius=RADIUS, length=LENGTH, regions=()):
+    """Writes the base scene with count extras (cylinders of radius and length) of placement number
+    `placement`, packed into the regions in turn when there are some; returns its path and the
+    dimension of its state space (the robot's joints, and x, y, z, yaw per object)."""
     tree = ET.parse(base)
     root = tree.getroot()
     robot = root.find("robot")
@@ -98,13 +107,19 @@ def make_scene(base, count, placement, robot_radius, directory):
     after = list(root).index(objects[-1]) + 1
     start = root.find("start")
     for i in range(count):
-        x, y = floor.place(rng, blocking=(i % 2 == 0))
+        region = regions[i % len(regions)] if regions else None
+        x, y = floor.place(rng, radius, blocking=(i % 2 == 0), region=region)
         name = f"extra{i + 1}"
         element = ET.Element("object", name=name)
-        ET.SubElement(element, "cylinder", radius=str(RADIUS), length=str(LENGTH))
+        ET.SubElement(element, "cylinder", radius=str(radius), length=str(length))
         root.insert(after + i, element)
         ET.SubElement(start, "object", name=name, xyz=f"{x:.4f} {y:.4f} 0")
-    root.set("name", f"{root.get('name')}_k{count}_p{placement}")
+    if radius != RADIUS:
+        # a standoff for every object suits one radius only: each object then gets its own
+        for push in root.iter("push_mobile"):
+            push.attrib.pop("standoff", None)
+    family = "" if radius == RADIUS and not regions else f"_r{radius:g}"
+    root.set("name", f"{root.get('name')}{family}_k{count}_p{placement}")
     path = os.path.join(directory, f"{root.get('name')}.xml")
     ET.indent(tree)
     tree.write(path, xml_declaration=True, encoding="unicode")
@@ -135,6 +150,11 @@ def main():
     parser.add_argument("--seeds", type=int, default=5, help="seeds per placement (default: %(default)s)")
     parser.add_argument("--time-limit", type=float, default=60.0, help="seconds per run (default: %(default)s)")
     parser.add_argument("--robot-radius", type=float, default=0.2, help="metres (default: %(default)s)")
+    parser.add_argument("--radius", type=float, default=RADIUS, help="extras' radius, metres (default: %(default)s)")
+    parser.add_argument("--length", type=float, default=LENGTH, help="extras' length, metres (default: %(default)s)")
+    parser.add_argument("--region", type=float, nargs=4, action="append", default=[],
+                        metavar=("XMIN", "YMIN", "XMAX", "YMAX"),
+                        help="pack the extras into this floor rectangle (repeatable: in turn)")
     parser.add_argument("--binary", default="build/apps/ompl_mm_plan")
     parser.add_argument("--out", default="out/clutter", help="directory of the scenes (default: %(default)s)")
     parser.add_argument("--markdown", help="also write the table to this file")
@@ -144,9 +164,15 @@ def main():
     check_binary(args.binary)
     if min(args.counts) < 0 or args.placements < 1 or args.seeds < 1 or not args.time_limit > 0:
         sys.exit("counts must be at least 0, placements and seeds at least 1, the time limit positive")
+    if not (args.radius > 0 and args.length > 0):
+        sys.exit("the extras' radius and length must be positive")
+    for region in args.region:
+        if not (region[0] < region[2] and region[1] < region[3]):
+            sys.exit(f"region {' '.join(f'{v:g}' for v in region)}: its minimum must lie below its maximum")
     os.makedirs(args.out, exist_ok=True)
 
-    lines = [f"{os.path.basename(args.scene)} with K extra objects, {args.placements} placements x "
+    extras = f"r {args.radius:g} m" + "".join(f", in {' '.join(f'{v:g}' for v in r)}" for r in args.region)
+    lines = [f"{os.path.basename(args.scene)} with K extra objects ({extras}), {args.placements} placements x "
              f"{args.seeds} seeds per K, {args.time_limit:g} s limit"
              + "".join(f", {setting}" for setting in args.param), "",
              "| K | state dims | solved | median | mean (solved) | max | peak memory median / max | "
@@ -158,7 +184,8 @@ def main():
         for count in args.counts:
             results = []
             for placement in range(1, args.placements + 1):
-                scene, dims = make_scene(args.scene, count, placement, args.robot_radius, args.out)
+                scene, dims = make_scene(args.scene, count, placement, args.robot_radius, args.out,
+                                         args.radius, args.length, args.region)
                 for seed in range(1, args.seeds + 1):
                     results.append(run_app(args.binary, scene, seed, workdir, options))
             lines.append(report(count, dims, results, args.time_limit))

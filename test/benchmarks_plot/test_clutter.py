@@ -2,8 +2,9 @@
 """Tests for benchmarks/clutter.py: the generated scenes keep MOBILE BLOCKED's objects, goal and
 start, add K cylinders that touch nothing and stay clear of the robot's start and goal and of the
 goal object's target, half of them blocking (a gap narrower than the robot to their nearest
-neighbour); the same placement number gives the same scene; ompl_mm_plan accepts every scene; the
-report has a row per K with the peak memory. Standard library only.
+neighbour); a dense family packs smaller cylinders into given rectangles, touching nothing; the same
+placement number gives the same scene; ompl_mm_plan accepts every scene; the report has a row per K
+with the peak memory. Standard library only.
 
 Usage: test_clutter.py --mm-plan BINARY --scenes DIR --scratch DIR"""
 import argparse
@@ -65,6 +66,36 @@ class ClutterScenes(unittest.TestCase):
                 blocking += 1
         self.assertEqual(blocking, 4)
 
+    def test_dense_family_packs_small_extras_into_the_regions(self):
+        regions = [(-2.5, 0.5, -0.5, 2.5), (0.5, -2.5, 2.5, -0.5)]
+        path, dims = clutter.make_scene(self.base, 32, 1, 0.2, ARGS.scratch, 0.08, 0.3, regions)
+        self.assertEqual(dims, 2 + 4 * 36)
+        root = ET.parse(path).getroot()
+        self.assertIn("_r0.08_k32_p1", root.get("name"))
+        # pushed from their own standoffs, not from the base scene's (made for its larger objects)
+        self.assertIsNone(root.find("primitives/push_mobile").get("standoff"))
+        positions = starts(path)
+        floor = clutter.Floor(ET.parse(self.base).getroot(), 0.2)
+        for i in range(1, 33):
+            name = f"extra{i}"
+            cylinder = root.find(f"object[@name='{name}']/cylinder")
+            self.assertEqual((cylinder.get("radius"), cylinder.get("length")), ("0.08", "0.3"))
+            x, y = positions[name]
+            xmin, ymin, xmax, ymax = regions[(i - 1) % 2]
+            self.assertTrue(xmin + 0.08 - 1e-3 <= x <= xmax - 0.08 + 1e-3 and
+                            ymin + 0.08 - 1e-3 <= y <= ymax - 0.08 + 1e-3, f"{name} at {x}, {y}")
+            floor.discs = [(ox, oy, 0.08 if n.startswith("extra") else 0.2)
+                           for n, (ox, oy) in positions.items() if n != name]
+            self.assertGreaterEqual(floor.gap(x, y, 0.08), clutter.MIN_GAP - 1e-3, f"{name} touches something")
+
+    def test_a_region_too_small_is_reported(self):
+        run = subprocess.run([sys.executable, os.path.join(BENCHMARKS, "clutter.py"), "--scene", self.base,
+                              "--counts", "40", "--placements", "1", "--seeds", "1", "--binary", ARGS.mm_plan,
+                              "--out", ARGS.scratch, "--radius", "0.1", "--region", "-2.5", "2", "-2", "2.5"],
+                             capture_output=True, text=True, timeout=600)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("no free spot in region -2.5 2 -2 2.5", run.stderr)
+
     def test_same_placement_same_scene(self):
         a, _ = clutter.make_scene(self.base, 6, 2, 0.2, ARGS.scratch)
         first = text(a)
@@ -106,6 +137,10 @@ class ClutterScenes(unittest.TestCase):
                               "--binary", ARGS.mm_plan], capture_output=True, text=True, timeout=60)
         self.assertNotEqual(run.returncode, 0)
         self.assertIn("counts must be at least 0", run.stderr)
+        run = subprocess.run([sys.executable, os.path.join(BENCHMARKS, "clutter.py"), "--region", "1", "0", "0", "1",
+                              "--binary", ARGS.mm_plan], capture_output=True, text=True, timeout=60)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("its minimum must lie below its maximum", run.stderr)
 
 
 if __name__ == "__main__":
