@@ -4,7 +4,10 @@
 #include "ompl_core/io/TextFormat.h"
 #include "ompl_mm/primitives/EmptySpacePlanner.h"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <iterator>
 
 namespace ompl_mm
 {
@@ -74,6 +77,53 @@ namespace ompl_mm
         return pose;
     }
 
+    bool ProblemCheck::tries(EmptySpacePlanner &planner, const ompl::base::State *from,
+                             const ompl::base::State *to, ompl::RNG &rng, Trajectory &trajectory,
+                             const std::function<bool(const ompl::base::State *)> &arrived) const
+    {
+        // primitives that search (inverse kinematics) may miss once: only repeated misses count
+        for (unsigned int attempt = 0; attempt < REACH_ATTEMPTS; ++attempt)
+            if (planner.plan(from, to, trajectory, rng) != EmptySpacePlanner::Outcome::Failed &&
+                arrived(trajectory.back()))
+                return true;
+        return false;
+    }
+
+    bool ProblemCheck::movesThere(EmptySpacePlanner &planner, const ompl::base::State *from,
+                                  const ompl::base::State *to, unsigned int object, ompl::RNG &rng,
+                                  Trajectory &trajectory) const
+    {
+        return tries(planner, from, to, rng, trajectory,
+                     [&](const ompl::base::State *end) { return !space_.objectMoves(end, to, object); });
+    }
+
+    bool ProblemCheck::carriesThere(EmptySpacePlanner &lifting, EmptySpacePlanner &planner,
+                                    const ompl::base::State *from, const ompl::base::State *to,
+                                    unsigned int object, ompl::RNG &rng, Trajectory &trajectory) const
+    {
+        // first picked up: the pickups towards the object above its goal (they lift it, by their
+        // own height, where the hand grasps it) ...
+        ompl::base::State *held = space_.cloneState(to);
+        ObjectPose above = space_.objectPose(to, object);
+        above.position.z() += CARRY_HEIGHT;
+        space_.setObjectPose(held, object, above);
+        bool carried =
+            space_.restingSurface(held, object) < 0 &&
+            tries(lifting, from, held, rng, trajectory,
+                  [&](const ompl::base::State *end) { return space_.restingSurface(end, object) < 0; });
+        if (carried)
+        {
+            // ... then set down at the goal from where the robot holds it
+            space_.copyState(held, trajectory.back());
+            ompl::base::State *placed = space_.cloneState(held);
+            space_.setObjectPose(placed, object, space_.objectPose(to, object));
+            carried = movesThere(planner, held, placed, object, rng, trajectory);
+            space_.freeState(placed);
+        }
+        space_.freeState(held);
+        return carried;
+    }
+
     void ProblemCheck::checkGoal(const ompl::base::State *start,
                                  const std::vector<PrimitivePtr> &primitives) const
     {
@@ -102,6 +152,10 @@ namespace ompl_mm
         for (const PrimitivePtr &primitive : primitives)
             models.push_back(primitive->kinematicModel() ? primitive->kinematicModel() : primitive);
         EmptySpacePlanner planner(&space_, models);
+        std::vector<PrimitivePtr> pickups;
+        std::copy_if(models.begin(), models.end(), std::back_inserter(pickups),
+                     [](const PrimitivePtr &model) { return model->kind() == PrimitiveKind::Pickup; });
+        EmptySpacePlanner lifting(&space_, pickups);
         ompl::RNG rng(1);
         Trajectory trajectory(&space_);
         ompl::base::State *target = space_.cloneState(start);
@@ -118,15 +172,8 @@ namespace ompl_mm
                 pose.yaw = *goal.yaw;
             space_.copyState(target, start);
             space_.setObjectPose(target, object, pose);
-            // primitives that search (inverse kinematics) may miss once: only repeated misses count
-            bool reached = false;
-            for (unsigned int attempt = 0; attempt < REACH_ATTEMPTS && !reached; ++attempt)
-            {
-                const EmptySpacePlanner::Outcome outcome = planner.plan(start, target, trajectory, rng);
-                reached = outcome == EmptySpacePlanner::Outcome::Reached ||
-                          outcome == EmptySpacePlanner::Outcome::AlreadyThere;
-            }
-            if (!reached)
+            if (!movesThere(planner, start, target, object, rng, trajectory) &&
+                (pickups.empty() || !carriesThere(lifting, planner, start, target, object, rng, trajectory)))
             {
                 unreachable = &goal;
                 break;
