@@ -91,16 +91,17 @@ namespace ompl_mm
         bool removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng,
                              const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Ends each push reversal (ManipulationPath::pushReversals) that it can with
-            endReversal(), the last first (each tried once, until ptc is true); returns how many. */
+            endReversal(), the earlier push ended early or else dropped, the last reversal first
+            (each tried once, until ptc is true); returns how many. */
         unsigned int removeReversals(ManipulationPath &path, ompl::RNG &rng,
                                      const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Ends the reversal's earlier push where it comes nearest to where the later push leaves
-            the object, keeps the object there until the later push, and moves it from there to
-            that end with the empty-space planner's primitives (none when it is there already),
-            the robot routed around the object where its old motions meet it. True when every
-            motion of that is valid (the path then changed; its states after the later push stay
-            as they were). */
-        bool endReversal(ManipulationPath &path, const ManipulationPath::PushReversal &reversal,
+            the object (drop: at its start), keeps the object there until the later push, and
+            moves it from there to that end with the empty-space planner's primitives (none when
+            it is there already), the robot routed around the object where its old motions meet
+            it. True when every motion of that is valid (the path then changed; its states after
+            the later push stay as they were). */
+        bool endReversal(ManipulationPath &path, const ManipulationPath::PushReversal &reversal, bool drop,
                          ompl::RNG &rng, const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Chains the motions between consecutive states into result (reset to the first state):
             each motion as it is when valid; else the robot routed (TransitConnector, within

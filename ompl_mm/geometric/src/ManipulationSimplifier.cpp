@@ -323,7 +323,8 @@ namespace ompl_mm
                     last = reversal;
             if (!last)
                 break;
-            if (endReversal(path, *last, rng, ptc))
+            // the earlier push ended early, else dropped (the push before it then meets the later)
+            if (endReversal(path, *last, false, rng, ptc) || endReversal(path, *last, true, rng, ptc))
                 ++removed;
             before = last->earlier;
         }
@@ -331,7 +332,8 @@ namespace ompl_mm
     }
 
     bool ManipulationSimplifier::endReversal(ManipulationPath &path,
-                                             const ManipulationPath::PushReversal &reversal, ompl::RNG &rng,
+                                             const ManipulationPath::PushReversal &reversal, bool drop,
+                                             ompl::RNG &rng,
                                              const ompl::base::PlannerTerminationCondition &ptc) const
     {
         const std::size_t earlier = reversal.earlier;
@@ -341,9 +343,11 @@ namespace ompl_mm
         // the earlier push ends where it is nearest to where the later one leaves the object
         const Eigen::Vector3d from = space_->objectPosition(path.getState(earlier), object);
         const Eigen::Vector3d direction = space_->objectPosition(path.getState(earlier + 1), object) - from;
-        const double t = std::clamp(
-            (space_->objectPosition(afterLater, object) - from).dot(direction) / direction.squaredNorm(), 0.0,
-            1.0);
+        const double t = drop
+                             ? 0.0
+                             : std::clamp((space_->objectPosition(afterLater, object) - from).dot(direction) /
+                                              direction.squaredNorm(),
+                                          0.0, 1.0);
         std::vector<ompl::base::State *> states{si_->cloneState(path.getState(earlier))};
         if (t > 0.0)
         {
