@@ -90,9 +90,10 @@ namespace ompl_mm
         /** Removes one round trip if it can (trying until ptc is true); true when the path changed. */
         bool removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng,
                              const ompl::base::PlannerTerminationCondition &ptc) const;
-        /** Ends each push reversal (ManipulationPath::pushReversals) that it can with
-            endReversal(), the earlier push ended early or else dropped, the last reversal first
-            (each tried once, until ptc is true); returns how many. */
+        /** Ends each push reversal (ManipulationPath::pushReversals) that it can: the earlier push
+            ended early (endReversal()), else dropped, else the object pushed once to where the
+            later pushes leave it (pushOnceInstead()); the last reversal first (each tried once,
+            until ptc is true); returns how many. */
         unsigned int removeReversals(ManipulationPath &path, ompl::RNG &rng,
                                      const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Ends the reversal's earlier push where it comes nearest to where the later push leaves
@@ -103,6 +104,13 @@ namespace ompl_mm
             the later push stay as they were). */
         bool endReversal(ManipulationPath &path, const ManipulationPath::PushReversal &reversal, bool drop,
                          ompl::RNG &rng, const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** Instead of the reversal's earlier push and the later push run, pushes the object from
+            where the earlier push begins straight to where that run leaves it (the empty-space
+            planner's primitives), then takes the robot on along its old way, the object staying
+            there, routed around it where the old motions meet it. True when every motion of that
+            is valid (the path then changed; its states after the later run stay as they were). */
+        bool pushOnceInstead(ManipulationPath &path, const ManipulationPath::PushReversal &reversal,
+                             ompl::RNG &rng, const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Chains the motions between consecutive states into result (reset to the first state):
             each motion as it is when valid; else the robot routed (TransitConnector, within
             routeIterations and until ptc is true) to the next valid state that only the robot's

@@ -323,8 +323,10 @@ namespace ompl_mm
                     last = reversal;
             if (!last)
                 break;
-            // the earlier push ended early, else dropped (the push before it then meets the later)
-            if (endReversal(path, *last, false, rng, ptc) || endReversal(path, *last, true, rng, ptc))
+            // the earlier push ended early; else dropped (the push before it then meets the
+            // later); else pushed on at once to where the later pushes leave the object
+            if (endReversal(path, *last, false, rng, ptc) || endReversal(path, *last, true, rng, ptc) ||
+                pushOnceInstead(path, *last, rng, ptc))
                 ++removed;
             before = last->earlier;
         }
@@ -378,6 +380,45 @@ namespace ompl_mm
             si_->freeState(state);
         if (changed)
             path.replace(earlier, later + 1, result);
+        return changed;
+    }
+
+    bool ManipulationSimplifier::pushOnceInstead(ManipulationPath &path,
+                                                 const ManipulationPath::PushReversal &reversal,
+                                                 ompl::RNG &rng,
+                                                 const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        const unsigned int object = reversal.object;
+        std::size_t end = reversal.later + 1;  // the state after the later push run
+        while (end < path.getStateCount() - 1 && path.label(end).kind == PrimitiveKind::Push &&
+               path.label(end).object == static_cast<int>(object))
+            ++end;
+        const ObjectPose left = space_->objectPose(path.getState(end), object);
+        // from where the earlier push begins, the object pushed there (the robot ending anywhere)
+        ompl::base::State *target = si_->cloneState(path.getState(reversal.earlier));
+        space_->setObjectPose(target, object, left);
+        Trajectory push(space_);
+        const bool pushed = planner_.plan(path.getState(reversal.earlier), target, push, rng, ptc, true) ==
+                                EmptySpacePlanner::Outcome::Partial ||
+                            space_->equalStates(push.back(), target);
+        si_->freeState(target);
+        if (!pushed || space_->objectMoves(push.back(), path.getState(end), object))
+            return false;
+        // then the robot's old way on, the object staying there, routed around it
+        std::vector<ompl::base::State *> states;
+        for (std::size_t k = 0; k < push.size(); ++k)
+            states.push_back(si_->cloneState(push.state(k)));
+        for (std::size_t k = reversal.earlier + 1; k <= end; ++k)
+        {
+            states.push_back(si_->cloneState(path.getState(k)));
+            space_->setObjectPose(states.back(), object, left);
+        }
+        Trajectory result(space_);
+        const bool changed = routeThrough(states, result, CONNECT_ITERATIONS, rng, ptc);
+        for (ompl::base::State *state : states)
+            si_->freeState(state);
+        if (changed)
+            path.replace(reversal.earlier, end, result);
         return changed;
     }
 

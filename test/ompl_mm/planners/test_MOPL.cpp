@@ -21,10 +21,10 @@ using namespace ompl_mm::test;
 
 namespace
 {
-    /** Searches here end after twice the iterations the slowest seed needs (seed 6: 9887), so that a
-        regression fails in about a second instead of running to a time limit; a passing search stops at
-        its solution, never at the bound (iteration counts are deterministic per seed). */
-    constexpr unsigned int MAX_ITERATIONS = 20000;
+    /** Searches here end after twice the iterations the slowest seed needs (seed 138: 35905), so
+        that a regression fails in seconds instead of running to a time limit; a passing search stops
+        at its solution, never at the bound (iteration counts are deterministic per seed). */
+    constexpr unsigned int MAX_ITERATIONS = 72000;
 
     ompl::base::PlannerStatus boundedSolve(ManipulationSetup &setup)
     {
@@ -49,14 +49,15 @@ TEST_P(MOPLOnMobileBlocked, SolvesAndSolutionPassesIndependentRecheck)
     EXPECT_GT(path.primitiveCounts().at("push"), 0u) << "obj3 must be pushed";
     EXPECT_EQ(ManipulationSimplifier::countRoundTrips(path), 0u) << "seed 1 pushed obj4 away and back";
     // seed 70 pushed obj3 and obj4 past where they were wanted and back; in seeds 13 and 74 a
-    // replanned window pushed an object on where a later push brought it back; in seed 200 ending
-    // one reversal left a smaller one after it
+    // replanned window pushed an object on where a later push brought it back; seeds 138 and 224
+    // keep reversals unless an earlier push may be dropped, or the object pushed once to where
+    // the later pushes leave it
     EXPECT_TRUE(path.pushReversals().empty());
     planarRecheck(*setup.manipulationSpace(), path, scene);
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, MOPLOnMobileBlocked,
-                         ::testing::Values(1u, 2u, 3u, 4u, 5u, 6u, 13u, 70u, 74u, 200u));
+                         ::testing::Values(1u, 2u, 3u, 4u, 5u, 6u, 13u, 70u, 74u, 138u, 224u));
 
 namespace
 {
