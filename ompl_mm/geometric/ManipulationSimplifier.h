@@ -133,6 +133,17 @@ namespace ompl_mm
                         std::size_t first, std::size_t last, const ompl::base::Goal *goal,
                         unsigned int routeIterations, ompl::RNG &rng,
                         const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** Appends copies of path's states first … last with `object` at pose to states. */
+        void appendHeld(const ManipulationPath &path, std::size_t first, std::size_t last,
+                        unsigned int object, const ObjectPose &pose,
+                        std::vector<ompl::base::State *> &states) const;
+        /** Frees the states and empties the vector. */
+        void freeAll(std::vector<ompl::base::State *> &states) const;
+        /** Chains states (routeThrough) and, when that works, puts the result in place of path's
+            states first … last; frees the states (and empties the vector) either way. */
+        bool replaceRouted(ManipulationPath &path, std::size_t first, std::size_t last,
+                           std::vector<ompl::base::State *> &states, unsigned int routeIterations,
+                           ompl::RNG &rng, const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Shortens path with one round of the steps of OMPL's PathSimplifier (see the class
             comment); leaves it as it is when ptc becomes true before the round's copy is checked. */
         void shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng,

@@ -253,29 +253,48 @@ namespace ompl_mm
                                             const ompl::base::PlannerTerminationCondition &ptc) const
     {
         std::vector<ompl::base::State *> held;
-        for (std::size_t k = first; k <= last; ++k)
-        {
-            held.push_back(si_->cloneState(path.getState(k)));
-            space_->setObjectPose(held.back(), object, pose);
-        }
+        appendHeld(path, first, last, object, pose, held);
         const bool endKept =
             last + 1 < path.getStateCount() || space_->equalStates(held.back(), path.getState(last));
         // the end decides before any routing is tried
         if (!(endKept || (goal && goal->isSatisfied(held.back()))))
         {
-            for (ompl::base::State *state : held)
-                si_->freeState(state);
+            freeAll(held);
             return false;
         }
         // the robot's old motions meet the held object where it was pushed before
-        Trajectory result(space_);
-        const bool routed = routeThrough(held, result, routeIterations, rng, ptc);
-        for (ompl::base::State *state : held)
+        return replaceRouted(path, first, last, held, routeIterations, rng, ptc);
+    }
+
+    void ManipulationSimplifier::appendHeld(const ManipulationPath &path, std::size_t first, std::size_t last,
+                                            unsigned int object, const ObjectPose &pose,
+                                            std::vector<ompl::base::State *> &states) const
+    {
+        for (std::size_t k = first; k <= last; ++k)
+        {
+            states.push_back(si_->cloneState(path.getState(k)));
+            space_->setObjectPose(states.back(), object, pose);
+        }
+    }
+
+    void ManipulationSimplifier::freeAll(std::vector<ompl::base::State *> &states) const
+    {
+        for (ompl::base::State *state : states)
             si_->freeState(state);
-        if (!routed)
-            return false;
-        path.replace(first, last, result);
-        return true;
+        states.clear();
+    }
+
+    bool ManipulationSimplifier::replaceRouted(ManipulationPath &path, std::size_t first, std::size_t last,
+                                               std::vector<ompl::base::State *> &states,
+                                               unsigned int routeIterations, ompl::RNG &rng,
+                                               const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        Trajectory result(space_);
+        const bool routed = routeThrough(states, result, routeIterations, rng, ptc);
+        freeAll(states);
+        if (routed)
+            path.replace(first, last, result);
+        return routed;
     }
 
     bool ManipulationSimplifier::routeThrough(const std::vector<ompl::base::State *> &states,
@@ -360,11 +379,7 @@ namespace ompl_mm
         // motion counts as moving it), and the empty-space planner below then only moves the robot
         const ObjectPose held = space_->objectPose(states.back(), object);
         // the object stays there until the later push, which then starts from there
-        for (std::size_t k = earlier + 1; k <= later; ++k)
-        {
-            states.push_back(si_->cloneState(path.getState(k)));
-            space_->setObjectPose(states.back(), object, held);
-        }
+        appendHeld(path, earlier + 1, later, object, held, states);
         Trajectory push(space_);
         const EmptySpacePlanner::Outcome outcome =
             planner_.plan(states.back(), afterLater, push, rng, ptc, true);
@@ -372,15 +387,13 @@ namespace ompl_mm
             states.push_back(si_->cloneState(push.state(k)));
         if (outcome == EmptySpacePlanner::Outcome::AlreadyThere)
             states.push_back(si_->cloneState(afterLater));
-        Trajectory result(space_);
-        const bool changed = (outcome == EmptySpacePlanner::Outcome::Reached ||
-                              outcome == EmptySpacePlanner::Outcome::AlreadyThere) &&
-                             routeThrough(states, result, CONNECT_ITERATIONS, rng, ptc);
-        for (ompl::base::State *state : states)
-            si_->freeState(state);
-        if (changed)
-            path.replace(earlier, later + 1, result);
-        return changed;
+        if (outcome != EmptySpacePlanner::Outcome::Reached &&
+            outcome != EmptySpacePlanner::Outcome::AlreadyThere)
+        {
+            freeAll(states);
+            return false;
+        }
+        return replaceRouted(path, earlier, later + 1, states, CONNECT_ITERATIONS, rng, ptc);
     }
 
     bool ManipulationSimplifier::pushOnceInstead(ManipulationPath &path,
@@ -408,18 +421,8 @@ namespace ompl_mm
         std::vector<ompl::base::State *> states;
         for (std::size_t k = 0; k < push.size(); ++k)
             states.push_back(si_->cloneState(push.state(k)));
-        for (std::size_t k = reversal.earlier + 1; k <= end; ++k)
-        {
-            states.push_back(si_->cloneState(path.getState(k)));
-            space_->setObjectPose(states.back(), object, left);
-        }
-        Trajectory result(space_);
-        const bool changed = routeThrough(states, result, CONNECT_ITERATIONS, rng, ptc);
-        for (ompl::base::State *state : states)
-            si_->freeState(state);
-        if (changed)
-            path.replace(reversal.earlier, end, result);
-        return changed;
+        appendHeld(path, reversal.earlier + 1, end, object, left, states);
+        return replaceRouted(path, reversal.earlier, end, states, CONNECT_ITERATIONS, rng, ptc);
     }
 
     bool ManipulationSimplifier::replanWindow(ManipulationPath &path, std::size_t first, std::size_t last,
