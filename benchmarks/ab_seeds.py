@@ -4,7 +4,7 @@ it runs the old binary and then the new one (alternating, so both see the same m
 and reports each one's median and mean planning time, success, the median of the per-seed time
 ratios (robust to seeds of very different length), and how many seeds gave an identical result
 (every value both write, but the times). With --quality (ompl_mm_plan only) it also reports
-plan quality from the JSON and the path files: mean tool-path length, round-trip pushes (an
+plan quality from the JSON and the path files: mean tool-path length, pushes per plan, round-trip pushes (an
 object pushed back to where it stood before), push reversals (a push moving an object back against
 the push before, ManipulationPath::pushReversals) and the smoothing time. Standard library only.
 
@@ -41,7 +41,9 @@ def describe_quality(name, records):
         return f"{name}: no solved run"
     trips = [r["round_trips"] for r in solved]
     reversals = [r["reversals"] for r in solved]
+    pushes = [sum(n for kind, n in r.get("primitives", {}).items() if kind.startswith("push")) for r in solved]
     return (f"{name}: tool path mean {statistics.mean(r['path_length_m'] for r in solved):.3f} m, "
+            f"pushes per plan {statistics.mean(pushes):.2f} (in {sum(1 for p in pushes if p)} plans), "
             f"round-trip pushes {sum(trips)} in {sum(1 for t in trips if t)}/{len(solved)} plans, "
             f"push reversals {sum(reversals)} in {sum(1 for r in reversals if r)}/{len(solved)} plans, "
             f"smoothing time median {statistics.median(r['stats']['time_smoothing_s'] for r in solved):.4f} s")

@@ -19,9 +19,9 @@ namespace ompl_mm
         a null-space step towards the middle of the joint ranges, capped at maxStep per joint and
         clamped to the limits (continuous joints wrap).
         When an attempt has not converged after `iterations`, it restarts from random joint values
-        within the limits, at most `restarts` times and within `timeLimit`; an attempt from random
-        values also gives up once it is stuck (its error still at least 90 % of what it was
-        `stallIterations` iterations before: held at a joint limit, or circling). Deterministic for a
+        within the limits, at most `restarts` times and within `timeLimit`; an attempt also gives up
+        once it is stuck (its error still at least 90 % of what it was `stallIterations` iterations
+        before: held at a joint limit, or circling). Deterministic for a
         given random generator state. Holds its own work space, so the hot path allocates nothing;
         use one solver per thread. Its parameters are declared (params()): ik_tolerance,
         ik_iterations, ik_restarts, ik_damping, ik_time_limit, ik_any_yaw, ik_stall_iterations. */
@@ -47,11 +47,12 @@ namespace ompl_mm
         unsigned int iterations{20};
         /** Attempts from random joint values after the first; 100 by default. */
         unsigned int restarts{100};
-        /** Iterations over which the error of an attempt from random joints must fall by a tenth,
-            else the attempt gives up (0: never); 8 by default: on targets out of reach such attempts
-            then cost a few iterations instead of all of them, and few that would have converged are
-            given up (benchmarks/bench_ik, --stall). The attempt from the seed is never cut short:
-            its solution is the one near the seed, which keeps the robot's motions short. */
+        /** Iterations over which the error of an attempt must fall by a tenth, else the attempt
+            gives up (0: never); 8 by default: on targets out of reach such attempts then cost a few
+            iterations instead of all of them, and few that would have converged are given up
+            (benchmarks/bench_ik, --stall). The attempt from the seed too: of the seed attempts cut
+            short this way while planning the arm scenes, 97 % (MEKA CLEAN-UP) to over 99 % (KUKA
+            TABLE, KUKA CABINET) would not have converged in all their iterations either. */
         unsigned int stallIterations{8};
         /** Damping of the least-squares step while the error is 1 or more; it shrinks with the error
             (damping times the error), so steps are steady far from the target and converge fast
@@ -95,7 +96,7 @@ namespace ompl_mm
 
         /** One attempt from the chain's values in work_ (the seed's, or random ones after a restart),
             until end if any; true when it converged. */
-        bool attempt(const Eigen::Isometry3d &target, IkTask task, bool fromSeed,
+        bool attempt(const Eigen::Isometry3d &target, IkTask task,
                      const std::optional<std::chrono::steady_clock::time_point> &end);
 
         KinematicChain chain_;

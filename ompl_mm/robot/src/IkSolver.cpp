@@ -84,7 +84,7 @@ namespace ompl_mm
         return taskError(target, chain_.toolPose(q, base_), task).norm();
     }
 
-    bool IkSolver::attempt(const Eigen::Isometry3d &target, IkTask task, bool fromSeed,
+    bool IkSolver::attempt(const Eigen::Isometry3d &target, IkTask task,
                            const std::optional<std::chrono::steady_clock::time_point> &end)
     {
         const unsigned int n = chain_.size();
@@ -96,10 +96,9 @@ namespace ompl_mm
             const double size = error.norm();
             if (size < tolerance)
                 return true;
-            // an attempt from random joints that is stuck gives up (the errors of its last
-            // stallIterations iterations, oldest at it % stallIterations); one from the seed goes on,
-            // as its solution is the one near the seed
-            if (stallIterations > 0 && !fromSeed)
+            // an attempt that is stuck gives up (the errors of its last stallIterations iterations,
+            // oldest at it % stallIterations)
+            if (stallIterations > 0)
             {
                 double &before = recentErrors_[it % stallIterations];
                 if (it >= stallIterations && size > STALL_RATIO * before)
@@ -176,7 +175,7 @@ namespace ompl_mm
             if (a > 0)
                 for (unsigned int i = 0; i < n; ++i)
                     work_[chain_.variable(i)] = rng.uniformReal(chain_.lower(i), chain_.upper(i));
-            if (attempt(target, task, a == 0, end))
+            if (attempt(target, task, end))
             {
                 for (unsigned int i = 0; i < n; ++i)
                     q[chain_.variable(i)] = work_[chain_.variable(i)];
