@@ -18,6 +18,44 @@ namespace ompl_mm
         {
             return std::remainder(angle, 2.0 * PI);
         }
+
+        /** Overwrites x with the solution y of m y = x, m symmetric, by Cholesky (m = L L^T);
+            false when m is not positive definite (x then partly overwritten). Written out for the
+            fixed size: Eigen's LLT factors through dynamic-size blocks, which took a sixth of the
+            IK's time on the Meka-like arm. */
+        bool choleskySolve(Eigen::Matrix<double, 6, 6> m, Eigen::Matrix<double, 6, 1> &x)
+        {
+            Eigen::Matrix<double, 6, 1> inverseDiagonal;  // of L: one division per row
+            for (int j = 0; j < 6; ++j)
+            {
+                double pivot = m(j, j);
+                for (int k = 0; k < j; ++k)
+                    pivot -= m(j, k) * m(j, k);
+                if (!(pivot > 0.0))
+                    return false;
+                inverseDiagonal[j] = 1.0 / std::sqrt(pivot);
+                for (int i = j + 1; i < 6; ++i)
+                {
+                    double value = m(i, j);
+                    for (int k = 0; k < j; ++k)
+                        value -= m(i, k) * m(j, k);
+                    m(i, j) = value * inverseDiagonal[j];
+                }
+            }
+            for (int i = 0; i < 6; ++i)  // L y = x
+            {
+                for (int k = 0; k < i; ++k)
+                    x[i] -= m(i, k) * x[k];
+                x[i] *= inverseDiagonal[i];
+            }
+            for (int i = 5; i >= 0; --i)  // L^T x = y
+            {
+                for (int k = i + 1; k < 6; ++k)
+                    x[i] -= m(k, i) * x[k];
+                x[i] *= inverseDiagonal[i];
+            }
+            return true;
+        }
     }  // namespace
 
     IkSolver::IkSolver(KinematicChain chain, const Eigen::Isometry3d &base)
@@ -65,10 +103,17 @@ namespace ompl_mm
         {
             // the target turned about the vertical to the yaw nearest to the current orientation
             // (the turn that maximises the trace of the difference): what is left no turn about the
-            // vertical can remove, and it pulls nowhere about the vertical
-            const double nearest =
-                std::atan2(difference(0, 1) - difference(1, 0), difference(0, 0) + difference(1, 1));
-            difference = Eigen::AngleAxisd(nearest, Eigen::Vector3d::UnitZ()).toRotationMatrix() * difference;
+            // vertical can remove, and it pulls nowhere about the vertical. The turn's cosine and
+            // sine are those terms normalised: no atan2 and sincos per iteration
+            const double cosine = difference(0, 0) + difference(1, 1);
+            const double sine = difference(0, 1) - difference(1, 0);
+            const double norm = std::sqrt(cosine * cosine + sine * sine);
+            if (norm > 0.0)
+            {
+                const Eigen::RowVector3d row0 = difference.row(0);
+                difference.row(0) = (cosine * row0 - sine * difference.row(1)) / norm;
+                difference.row(1) = (sine * row0 + cosine * difference.row(1)) / norm;
+            }
         }
         const Eigen::AngleAxisd rotation(difference);
         error.tail<3>() = rotation.angle() * rotation.axis();
@@ -136,11 +181,10 @@ namespace ompl_mm
                 step_.setZero();
             // with damping the matrix is positive definite and Cholesky needs no pivoting; without,
             // it may be singular, which LDLT's pivoting copes with
-            const Eigen::LLT<Eigen::Matrix<double, 6, 6>> cholesky(normal);
-            if (cholesky.info() == Eigen::Success)
-                step_.noalias() += jacobian_.transpose() * cholesky.solve(residual);
-            else
-                step_.noalias() += jacobian_.transpose() * normal.ldlt().solve(residual);
+            Vector6d weights = residual;
+            if (!choleskySolve(normal, weights))
+                weights = normal.ldlt().solve(residual);
+            step_.noalias() += jacobian_.transpose() * weights;
             const double largest = step_.cwiseAbs().maxCoeff();
             if (largest > maxStep)
                 step_ *= maxStep / largest;

@@ -1,6 +1,7 @@
 // Tests for KinematicChain on the KUKA LWR-like arm: the tool pose equals the MOPL paper's DH table
 // computed by hand at three configurations and RobotModel's forward kinematics everywhere; the geometric
-// Jacobian equals finite differences of the pose; prismatic chains work as well.
+// Jacobian equals finite differences of the pose; prismatic chains work as well; a turn about each
+// coordinate axis and its negative matches a rotation matrix.
 #include "ompl_mm/robot/KinematicChain.h"
 
 #include <gtest/gtest.h>
@@ -175,4 +176,39 @@ TEST(KinematicChain, AChainThroughAMimicJointIsRefusedNamingIt)
     // a chain that stops above the fingers is fine, and so is the leader's own finger
     EXPECT_EQ(KinematicChain(robot, robot.linkIndex("hand")).size(), 1u);
     EXPECT_EQ(KinematicChain(robot, robot.linkIndex("left_finger")).size(), 2u);
+}
+
+TEST(KinematicChain, TurnsAboutEachAxisAndItsNegativeAsARotationMatrixDoes)
+{
+    // one joint about +-x, +-y, +-z, a tip off its axis: chain and model against Eigen's own rotation
+    // (both use the two-column turn, so comparing them with each other alone would not catch a sign)
+    const Eigen::Vector3d tip(0.3, 0.2, 0.1);
+    const double angle = 0.7;
+    for (int k = 0; k < 3; ++k)
+        for (const double sign : {1.0, -1.0})
+        {
+            Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+            axis[k] = sign;
+            const std::string urdf =
+                "<robot name='one_joint'><link name='base'/><link name='arm'/><link name='tip'/>"
+                "<joint name='turn' type='revolute'><parent link='base'/><child link='arm'/>"
+                "<axis xyz='" +
+                std::to_string(axis.x()) + " " + std::to_string(axis.y()) + " " + std::to_string(axis.z()) +
+                "'/><limit lower='-3' upper='3' effort='1' velocity='1'/></joint>"
+                "<joint name='fixed_tip' type='fixed'><parent link='arm'/><child link='tip'/>"
+                "<origin xyz='0.3 0.2 0.1'/></joint></robot>";
+            SCOPED_TRACE(urdf);
+            const RobotModel robot = RobotModel::fromUrdfString(urdf, "one_joint.urdf");
+            const int tipLink = robot.linkIndex("tip");
+            const KinematicChain chain(robot, tipLink);
+            const std::vector<double> q{angle};
+            const Eigen::AngleAxisd expected(angle, axis);
+            const Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
+            for (const Eigen::Isometry3d &pose :
+                 {chain.toolPose(q.data(), base), robot.linkFrame(q.data(), base, tipLink)})
+            {
+                EXPECT_LT((pose.translation() - expected * tip).norm(), 1e-12);
+                EXPECT_LT((pose.linear() - expected.toRotationMatrix()).cwiseAbs().maxCoeff(), 1e-12);
+            }
+        }
 }
