@@ -166,6 +166,12 @@ TEST_F(LwrIk, UnreachableTargetFailsAndLeavesTheJoints)
     const unsigned int stuckAfter = solver_.stallIterations + 1;
     EXPECT_GE(solver_.lastIterations(), 21u * stuckAfter);
     EXPECT_LT(solver_.lastIterations(), 21u * 2u * stuckAfter);
+    // the attempt from the seed alone (NearSeed) gives up long before its iterations run out
+    const unsigned int iterations = solver_.iterations;
+    solver_.iterations = 200;
+    EXPECT_FALSE(solver_.solve(far, IkTask::Position3D, q.data(), restarts, IkScope::NearSeed));
+    EXPECT_LT(solver_.lastIterations(), 2u * stuckAfter);
+    solver_.iterations = iterations;
     solver_.stallIterations = 0;
     EXPECT_FALSE(solver_.solve(far, IkTask::Position3D, q.data(), restarts));
     EXPECT_EQ(solver_.lastIterations(), 21u * solver_.iterations) << "every attempt ran out";
