@@ -51,6 +51,9 @@ namespace ompl_mm
 
     Eigen::Isometry3d ManipulationModel::toolFrame(const double *q) const
     {
-        return robot_.linkFrame(q, scene_.robot.basePose, toolLink_) * scene_.robot.toolOffset;
+        // the chain's fixed transforms folded together and its turns about coordinate axes: a
+        // third of the work of the links' transform products (tool paths and carried objects ask
+        // for it at every state)
+        return toolPointChain_->toolPose(q, scene_.robot.basePose);
     }
 }  // namespace ompl_mm
