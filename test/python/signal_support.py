@@ -4,11 +4,12 @@ import subprocess
 import time
 
 
-def interrupted(statement, seconds):
-    """Runs `statement` in a new interpreter, sends it SIGINT `seconds` after it starts, and returns
-    its exit status and standard output: 3 and "interrupted\\n" at the end when the statement
-    raised KeyboardInterrupt."""
+def interrupted(statement, seconds, prelude="pass"):
+    """Runs `prelude` and then `statement` in a new interpreter, sends it SIGINT `seconds` after the
+    statement starts, and returns its exit status and standard output: 3 and "interrupted\\n" at the
+    end when the statement raised KeyboardInterrupt."""
     script = ("import sys\n"
+              f"{prelude}\n"
               "print('started', flush=True)\n"
               "try:\n"
               f"    {statement}\n"
