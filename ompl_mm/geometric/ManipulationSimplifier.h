@@ -137,6 +137,9 @@ namespace ompl_mm
         void appendHeld(const ManipulationPath &path, std::size_t first, std::size_t last,
                         unsigned int object, const ObjectPose &pose,
                         std::vector<ompl::base::State *> &states) const;
+        /** Appends copies of trajectory's states from first on to states. */
+        void appendCopies(const Trajectory &trajectory, std::size_t first,
+                          std::vector<ompl::base::State *> &states) const;
         /** Frees the states and empties the vector. */
         void freeAll(std::vector<ompl::base::State *> &states) const;
         /** Chains states (routeThrough) and, when that works, puts the result in place of path's

@@ -21,10 +21,10 @@ namespace ompl_mm
         When an attempt has not converged after `iterations`, it restarts from random joint values
         within the limits, at most `restarts` times and within `timeLimit`; an attempt also gives up
         once it is stuck (its error still at least 90 % of what it was `stallIterations` iterations
-        before: held at a joint limit, or circling). Deterministic for a
-        given random generator state. Holds its own work space, so the hot path allocates nothing;
-        use one solver per thread. Its parameters are declared (params()): ik_tolerance,
-        ik_iterations, ik_restarts, ik_damping, ik_time_limit, ik_any_yaw, ik_stall_iterations. */
+        before: held at a joint limit, or circling). Deterministic for a given random generator
+        state. Holds its own work space, so the hot path allocates nothing; use one solver per
+        thread. Its parameters are declared (params()): ik_tolerance, ik_iterations, ik_restarts,
+        ik_damping, ik_time_limit, ik_any_yaw, ik_stall_iterations. */
     class IkSolver : public InverseKinematics
     {
     public:

@@ -277,6 +277,13 @@ namespace ompl_mm
         }
     }
 
+    void ManipulationSimplifier::appendCopies(const Trajectory &trajectory, std::size_t first,
+                                              std::vector<ompl::base::State *> &states) const
+    {
+        for (std::size_t k = first; k < trajectory.size(); ++k)
+            states.push_back(si_->cloneState(trajectory.state(k)));
+    }
+
     void ManipulationSimplifier::freeAll(std::vector<ompl::base::State *> &states) const
     {
         for (ompl::base::State *state : states)
@@ -383,8 +390,7 @@ namespace ompl_mm
         Trajectory push(space_);
         const EmptySpacePlanner::Outcome outcome =
             planner_.plan(states.back(), afterLater, push, rng, ptc, true);
-        for (std::size_t k = 1; k < push.size(); ++k)
-            states.push_back(si_->cloneState(push.state(k)));
+        appendCopies(push, 1, states);
         if (outcome == EmptySpacePlanner::Outcome::AlreadyThere)
             states.push_back(si_->cloneState(afterLater));
         if (outcome != EmptySpacePlanner::Outcome::Reached &&
@@ -419,8 +425,7 @@ namespace ompl_mm
             return false;
         // then the robot's old way on, the object staying there, routed around it
         std::vector<ompl::base::State *> states;
-        for (std::size_t k = 0; k < push.size(); ++k)
-            states.push_back(si_->cloneState(push.state(k)));
+        appendCopies(push, 0, states);
         appendHeld(path, reversal.earlier + 1, end, object, left, states);
         return replaceRouted(path, reversal.earlier, end, states, CONNECT_ITERATIONS, rng, ptc);
     }

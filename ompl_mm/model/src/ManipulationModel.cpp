@@ -51,9 +51,9 @@ namespace ompl_mm
 
     Eigen::Isometry3d ManipulationModel::toolFrame(const double *q) const
     {
-        // the chain's fixed transforms folded together and its turns about coordinate axes: a
-        // third of the work of the links' transform products (tool paths and carried objects ask
-        // for it at every state)
+        // the chain, its fixed transforms folded together and its turns about coordinate axes,
+        // rather than a transform product per link: tool paths and carried objects ask for it at
+        // every state
         return toolPointChain_->toolPose(q, scene_.robot.basePose);
     }
 }  // namespace ompl_mm
