@@ -14,7 +14,10 @@ namespace ompl_mm
 {
     /** Mode-aware smoothing of manipulation paths, the one MOPL applies to its solutions (OMPL's
         PathSimplifier only straightens motions one at a time and cannot drop a manipulation):
-        1. removes pointless manipulation: an object pushed away and later back to where it was is
+        1. pushes what only slides: an object picked up and put down again on the level it stood
+           on is pushed there instead when the push primitives can, the robot routed to the push
+           and on to where the carry's transits led, and the tool travels less (pushCarries());
+           then removes pointless manipulation: an object pushed away and later back to where it was is
            left where it was (the pushes become the robot's transits, routed around the object
            where they meet it) or, when that fails, the return push ends early (where it found the
            object, or at one of its waypoints short of the start) and the object stays there for
@@ -51,6 +54,7 @@ namespace ompl_mm
         /** What simplify() did. */
         struct Outcome
         {
+            unsigned int carriesPushed{0};      ///< carries replaced by pushes
             unsigned int roundTripsRemoved{0};  ///< objects no longer pushed away and back
             unsigned int reversalsRemoved{0};   ///< pushes no longer moving an object back
             unsigned int pushesShortened{0};    ///< push runs ended early or dropped
@@ -87,6 +91,19 @@ namespace ompl_mm
         static unsigned int countRoundTrips(const ManipulationPath &path);
 
     private:
+        /** Replaces each carry (a run of pickup and transfer segments of one object, with the
+            robot's transits before and after it) that the push primitives can do instead: the
+            object pushed from where it stands to where the carry puts it down, the robot routed
+            (TransitConnector) to the push and from its end to where the carry's transits end,
+            kept when every motion is valid and, both ways shortened by OMPL's shortcuts, the
+            tool travels less; the last carry first. Returns how many were replaced. */
+        unsigned int pushCarries(ManipulationPath &path, ompl::RNG &rng,
+                                 const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** The carry of `object` in states first … last replaced by pushes (see pushCarries(),
+            a few push plans and routes at most); true when the path changed. */
+        bool pushInsteadOfCarry(ManipulationPath &path, unsigned int object, std::size_t first,
+                                std::size_t last, ompl::RNG &rng,
+                                const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Removes one round trip if it can (trying until ptc is true); true when the path changed. */
         bool removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng,
                              const ompl::base::PlannerTerminationCondition &ptc) const;
@@ -160,6 +177,9 @@ namespace ompl_mm
             the path changed. */
         bool replanWindow(ManipulationPath &path, std::size_t first, std::size_t last, ompl::RNG &rng,
                           const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** OMPL's shortcuts on path (a few passes, while they find some), until ptc is true. */
+        void shortcut(ManipulationPath &path, ompl::RNG &rng,
+                      const ompl::base::PlannerTerminationCondition &ptc) const;
         /** True when every segment of the trajectory is a valid motion. */
         bool isValid(const Trajectory &trajectory) const;
 
@@ -168,6 +188,8 @@ namespace ompl_mm
         /** the space information's validator (its TerminationScope bounds the motion checks) */
         std::shared_ptr<ManipulationMotionValidator> validator_;
         mutable EmptySpacePlanner planner_;
+        /** the empty-space planner of the push primitives alone (those that end where asked) */
+        mutable EmptySpacePlanner pushPlanner_;
         TransitConnector connector_;
         mutable ToolPathStraightener straightener_;
         bool pushesSimulated_;  ///< see pushesSimulated()

@@ -57,7 +57,8 @@ namespace ompl_mm
         whose extensions chain manipulation primitives through an empty-space planner, whose samples
         leave parts undefined (resolved by the nearest neighbour), and whose goal tree gets its
         roots lazily by completing partial goals (PROJSAMP). Solutions are ManipulationPath objects
-        simplified by ManipulationSimplifier (pointless pushes removed, windows replanned).
+        simplified by ManipulationSimplifier (carries that only slide pushed, pointless pushes
+        removed, windows replanned).
 
         Use with a ManipulationStateSpace, a ManipulationValidityChecker and a ManipulationGoal
         (ManipulationSetup wires them). Requires primitives (setPrimitives) before setup(). Declared

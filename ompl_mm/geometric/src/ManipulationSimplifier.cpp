@@ -8,7 +8,10 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <initializer_list>
+#include <iterator>
 #include <limits>
+#include <optional>
 
 namespace ompl_mm
 {
@@ -21,16 +24,25 @@ namespace ompl_mm
         // trip, and (fewer: each push run tries several waypoints) after a push that ends early
         constexpr unsigned int CONNECT_ITERATIONS = 500;
         constexpr unsigned int SHORTER_PUSH_CONNECT_ITERATIONS = 50;
+        // empty-space plans of pushes tried in place of a carry (each push primitive's inverse
+        // kinematics draws new solutions each time)
+        constexpr unsigned int CARRY_PUSH_TRIES = 5;
+        // RRT iterations of each route to and from such a push: more than after a round trip, as
+        // the push starts and ends with the hand beside the object
+        constexpr unsigned int CARRY_ROUTE_ITERATIONS = 5000;
 
-        /** The runs of consecutive segments that push `object`: first and last state of each. */
-        std::vector<std::pair<std::size_t, std::size_t>> pushRuns(const ManipulationPath &path,
-                                                                  unsigned int object)
+        /** The runs of consecutive segments of `object` whose kind is one of kinds: first and last
+            state of each. */
+        std::vector<std::pair<std::size_t, std::size_t>> runsOf(const ManipulationPath &path,
+                                                                unsigned int object,
+                                                                std::initializer_list<PrimitiveKind> kinds)
         {
             std::vector<std::pair<std::size_t, std::size_t>> runs;
             const std::vector<SegmentLabel> &labels = path.labels();
             for (std::size_t i = 0; i < labels.size(); ++i)
             {
-                if (labels[i].kind != PrimitiveKind::Push || labels[i].object != static_cast<int>(object))
+                if (std::find(kinds.begin(), kinds.end(), labels[i].kind) == kinds.end() ||
+                    labels[i].object != static_cast<int>(object))
                     continue;
                 if (!runs.empty() && runs.back().second == i)
                     runs.back().second = i + 1;
@@ -38,6 +50,13 @@ namespace ompl_mm
                     runs.emplace_back(i, i + 1);
             }
             return runs;
+        }
+
+        /** The runs of consecutive segments that push `object`: first and last state of each. */
+        std::vector<std::pair<std::size_t, std::size_t>> pushRuns(const ManipulationPath &path,
+                                                                  unsigned int object)
+        {
+            return runsOf(path, object, {PrimitiveKind::Push});
         }
 
         bool samePose(const ObjectPose &a, const ObjectPose &b)
@@ -56,6 +75,36 @@ namespace ompl_mm
                 rng_.setLocalSeed(seed);
             }
         };
+
+        /** A copy of path's states first … last. */
+        ManipulationPath subPath(const ManipulationPath &path, std::size_t first, std::size_t last)
+        {
+            ManipulationPath part(path.getSpaceInformation());
+            part.appendFirst(path.getState(first));
+            for (std::size_t k = first + 1; k <= last; ++k)
+                part.appendLabelled(path.getState(k), path.label(k - 1));
+            return part;
+        }
+
+        /** The primitives that push and end where asked. */
+        std::vector<PrimitivePtr> exactPushes(const std::vector<PrimitivePtr> &primitives)
+        {
+            std::vector<PrimitivePtr> pushes;
+            std::copy_if(primitives.begin(), primitives.end(), std::back_inserter(pushes),
+                         [](const PrimitivePtr &p)
+                         { return p->kind() == PrimitiveKind::Push && p->endsWhereAsked(); });
+            return pushes;
+        }
+
+        /** OMPL's shortcuts on path while they find some; their motion checks stop at ptc (the
+            caller's TerminationScope), so one under way when it becomes true ends soon after. */
+        void shortcutPasses(ompl::geometric::PathSimplifier &simplifier, ManipulationPath &path,
+                            const ompl::base::PlannerTerminationCondition &ptc)
+        {
+            for (unsigned int k = 0; k < SHORTCUT_PASSES && !ptc; ++k)
+                if (!ompl_core::partialShortcut(simplifier, path))
+                    break;
+        }
 
         /** The path's first and last state and every state where the label changes. */
         std::vector<std::size_t> runBoundaries(const ManipulationPath &path)
@@ -83,6 +132,8 @@ namespace ompl_mm
           space_(si->getStateSpace()->as<ManipulationStateSpace>()),
           validator_(std::dynamic_pointer_cast<ManipulationMotionValidator>(si->getMotionValidator())),
           planner_(space_, validator_ ? validator_->primitives() : std::vector<PrimitivePtr>()),
+          pushPlanner_(space_,
+                       exactPushes(validator_ ? validator_->primitives() : std::vector<PrimitivePtr>())),
           connector_(si),
           straightener_(si)
     {
@@ -110,6 +161,7 @@ namespace ompl_mm
         path.removeRepeatedStates();
         if (!pushesSimulated_)
         {
+            outcome.carriesPushed = pushCarries(path, rng, stop);
             while (!ptc && removeRoundTrip(path, goal, rng, stop))
                 ++outcome.roundTripsRemoved;
             outcome.reversalsRemoved = removeReversals(path, rng, stop);
@@ -157,6 +209,97 @@ namespace ompl_mm
                     }
         }
         return count;
+    }
+
+    unsigned int ManipulationSimplifier::pushCarries(ManipulationPath &path, ompl::RNG &rng,
+                                                     const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        if (pushPlanner_.primitives().empty())
+            return 0;
+        // the last carry first: a change replaces states from its start on, so the carries before
+        // it keep their indices
+        struct Carry
+        {
+            std::size_t first, last;
+            unsigned int object;
+        };
+        std::vector<Carry> carries;
+        for (unsigned int object = 0; object < space_->objectCount(); ++object)
+            for (const auto &[first, last] :
+                 runsOf(path, object, {PrimitiveKind::Pickup, PrimitiveKind::Transfer}))
+                carries.push_back({first, last, object});
+        std::sort(carries.begin(), carries.end(),
+                  [](const Carry &a, const Carry &b) { return a.first > b.first; });
+        unsigned int replaced = 0;
+        for (Carry carry : carries)
+        {
+            // with the robot's transits before and after it, which the push's routes replace
+            const std::vector<SegmentLabel> &labels = path.labels();
+            while (carry.first > 0 && labels[carry.first - 1].kind == PrimitiveKind::Transit)
+                --carry.first;
+            while (carry.last < labels.size() && labels[carry.last].kind == PrimitiveKind::Transit)
+                ++carry.last;
+            if (!ptc && pushInsteadOfCarry(path, carry.object, carry.first, carry.last, rng, ptc))
+                ++replaced;
+        }
+        return replaced;
+    }
+
+    bool ManipulationSimplifier::pushInsteadOfCarry(ManipulationPath &path, unsigned int object,
+                                                    std::size_t first, std::size_t last, ompl::RNG &rng,
+                                                    const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        // from where the carry begins, the object pushed to where it puts it down (the robot
+        // ending anywhere); a carry that no push can do is no slide
+        const std::vector<PrimitivePtr> &pushes = pushPlanner_.primitives();
+        ompl::base::State *target = si_->cloneState(path.getState(first));
+        space_->setObjectPose(target, object, space_->objectPose(path.getState(last), object));
+        const bool slides =
+            std::any_of(pushes.begin(), pushes.end(),
+                        [&](const PrimitivePtr &p) { return p->isUseful(path.getState(first), target); });
+        // each try draws new push solutions and a new route, until one is shorter; the two ways
+        // compared after OMPL's shortcuts, which the later steps apply too (a route's detours
+        // shrink more than the planner's transits do)
+        Trajectory push(space_);
+        Trajectory routed(space_);
+        std::optional<ManipulationPath> carried;
+        std::optional<ManipulationPath> pushed;
+        for (unsigned int attempt = 0; slides && attempt < CARRY_PUSH_TRIES && !pushed && !ptc; ++attempt)
+        {
+            if (pushPlanner_.plan(path.getState(first), target, push, rng, ptc, true) ==
+                    EmptySpacePlanner::Outcome::Failed ||
+                space_->anyObjectMoves(push.back(), target))
+                continue;
+            // then the robot on to where the carry ends, routed where the straight motions collide
+            std::vector<ompl::base::State *> states;
+            appendCopies(push, 0, states);
+            states.push_back(si_->cloneState(path.getState(last)));
+            const bool found = routeThrough(states, routed, CARRY_ROUTE_ITERATIONS, rng, ptc);
+            freeAll(states);
+            if (!found)
+                continue;
+            if (!carried)
+            {
+                carried.emplace(subPath(path, first, last));
+                shortcut(*carried, rng, ptc);
+            }
+            ManipulationPath candidate(si_);
+            candidate.appendFirst(routed.state(0));
+            for (std::size_t k = 1; k < routed.size(); ++k)
+                candidate.appendLabelled(routed.state(k), routed.label(k - 1));
+            shortcut(candidate, rng, ptc);
+            if (candidate.toolPathLength() < carried->toolPathLength())
+                pushed.emplace(std::move(candidate));
+        }
+        si_->freeState(target);
+        if (!pushed)
+            return false;
+        Trajectory shortened(space_);
+        shortened.reset(pushed->getState(0));
+        for (std::size_t k = 1; k < pushed->getStateCount(); ++k)
+            shortened.append(pushed->getState(k), pushed->label(k - 1));
+        path.replace(first, last, shortened);
+        return true;
     }
 
     bool ManipulationSimplifier::removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal,
@@ -499,11 +642,7 @@ namespace ompl_mm
         // place (objects and all); a copy, kept only when all of it checks at the resolution
         ManipulationPath shorter(path);
         SeededPathSimplifier simplifier(si_, rng.uniformInt(1, std::numeric_limits<int>::max()));
-        // shortcuts while they find some; the steps' motion checks stop at ptc (the caller's
-        // TerminationScope), so a step under way when it becomes true ends soon after
-        for (unsigned int k = 0; k < SHORTCUT_PASSES && !ptc; ++k)
-            if (!ompl_core::partialShortcut(simplifier, shorter))
-                break;
+        shortcutPasses(simplifier, shorter, ptc);
         if (!ptc)
             simplifier.smoothBSpline(shorter, 3, shorter.length() / 100.0);
         if (!ptc)
@@ -515,6 +654,13 @@ namespace ompl_mm
         // a check stopped by ptc fails, so the copy is kept only when all of it was checked
         if (!ptc && shorter.check() && shorter.toolPathLength() < path.toolPathLength())
             path = shorter;
+    }
+
+    void ManipulationSimplifier::shortcut(ManipulationPath &path, ompl::RNG &rng,
+                                          const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        SeededPathSimplifier simplifier(si_, rng.uniformInt(1, std::numeric_limits<int>::max()));
+        shortcutPasses(simplifier, path, ptc);
     }
 
     bool ManipulationSimplifier::isValid(const Trajectory &trajectory) const

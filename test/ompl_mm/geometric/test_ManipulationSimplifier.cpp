@@ -1,13 +1,18 @@
 // Tests for ManipulationSimplifier: a push there and back becomes no push at all, a push back
 // against the one before is dropped or turned across it, a push ends where the way no longer needs
 // it, windows get shorter and stay valid, the same seed gives the same path, and it refuses a space
-// information without the manipulation motion validator.
+// information without the manipulation motion validator; on MEKA CLEAN-UP, a bottle lifted and
+// put down on the level it stood on is pushed there instead, one moved between levels stays carried.
 #include "ompl_mm/geometric/ManipulationSimplifier.h"
 
 #include "common/MobileBlocked.h"
+#include "ompl_core/run/GlobalSeed.h"
+#include "ompl_mm/scene/SceneLoader.h"
+#include "ompl_mm/setup/ManipulationSetup.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <initializer_list>
 
 using namespace ompl_mm;
@@ -428,4 +433,41 @@ TEST_F(Simplifier, NeedsTheManipulationMotionValidator)
     si->setStateValidityChecker(setup_.getStateValidityChecker());
     si->setup();
     EXPECT_THROW(ManipulationSimplifier{si}, ompl::Exception);
+}
+
+namespace
+{
+    /** Segments of path labelled kind for object. */
+    std::size_t countLabels(const ManipulationPath &path, PrimitiveKind kind, int object)
+    {
+        const std::vector<SegmentLabel> &labels = path.labels();
+        return static_cast<std::size_t>(std::count(labels.begin(), labels.end(), SegmentLabel{kind, object}));
+    }
+}  // namespace
+
+TEST(SimplifierOnMeka, ACarryOnOneLevelBecomesAPushAndOneBetweenLevelsStays)
+{
+    // MEKA CLEAN-UP with bottle1 (0.058 m along the lower level) and bottle2 (from the upper level
+    // down) to move, the robot's end free: the search finds carries for both (pushes seldom: the
+    // flat hand's push poses are hard to reach), the simplifier pushes bottle1 instead (without
+    // that step, this seed's plan carries it)
+    Scene scene = loadScene(OMPL_MM_SCENES_DIR "/meka_cleanup.xml");
+    scene.objectGoals.pop_back();
+    scene.robotGoal.joints.clear();
+    ompl_core::reseedOmpl(6);  // seeds 2 to 6 give such plans, seed 1 carries both
+    ManipulationSetup setup(scene);
+    ASSERT_EQ(setup.solve(60.0), ob::PlannerStatus::EXACT_SOLUTION);
+    const auto &path =
+        static_cast<const ManipulationPath &>(*setup.getProblemDefinition()->getSolutionPath());
+    const int bottle1 = 0;
+    const int bottle2 = 1;
+    EXPECT_GE(countLabels(path, PrimitiveKind::Push, bottle1), 1u);
+    EXPECT_EQ(countLabels(path, PrimitiveKind::Pickup, bottle1) +
+                  countLabels(path, PrimitiveKind::Transfer, bottle1),
+              0u);
+    EXPECT_GE(countLabels(path, PrimitiveKind::Transfer, bottle2), 1u);
+    EXPECT_TRUE(path.check());
+    EXPECT_EQ(path.checkLabels(), "");
+    EXPECT_TRUE(
+        setup.getProblemDefinition()->getGoal()->isSatisfied(path.getState(path.getStateCount() - 1)));
 }
