@@ -86,6 +86,26 @@ namespace ompl_mm
             return part;
         }
 
+        /** The trajectory of path's states and labels (for ManipulationPath::replace). */
+        Trajectory asTrajectory(const ManipulationPath &path, const ManipulationStateSpace *space)
+        {
+            Trajectory trajectory(space);
+            trajectory.reset(path.getState(0));
+            for (std::size_t k = 1; k < path.getStateCount(); ++k)
+                trajectory.append(path.getState(k), path.label(k - 1));
+            return trajectory;
+        }
+
+        /** The path of trajectory's waypoints and labels. */
+        ManipulationPath asPath(const Trajectory &trajectory, const ompl::base::SpaceInformationPtr &si)
+        {
+            ManipulationPath path(si);
+            path.appendFirst(trajectory.state(0));
+            for (std::size_t k = 1; k < trajectory.size(); ++k)
+                path.appendLabelled(trajectory.state(k), trajectory.label(k - 1));
+            return path;
+        }
+
         /** The primitives that push and end where asked. */
         std::vector<PrimitivePtr> exactPushes(const std::vector<PrimitivePtr> &primitives)
         {
@@ -283,10 +303,7 @@ namespace ompl_mm
                 carried.emplace(subPath(path, first, last));
                 shortcut(*carried, rng, ptc);
             }
-            ManipulationPath candidate(si_);
-            candidate.appendFirst(routed.state(0));
-            for (std::size_t k = 1; k < routed.size(); ++k)
-                candidate.appendLabelled(routed.state(k), routed.label(k - 1));
+            ManipulationPath candidate = asPath(routed, si_);
             shortcut(candidate, rng, ptc);
             if (candidate.toolPathLength() < carried->toolPathLength())
                 pushed.emplace(std::move(candidate));
@@ -294,11 +311,7 @@ namespace ompl_mm
         si_->freeState(target);
         if (!pushed)
             return false;
-        Trajectory shortened(space_);
-        shortened.reset(pushed->getState(0));
-        for (std::size_t k = 1; k < pushed->getStateCount(); ++k)
-            shortened.append(pushed->getState(k), pushed->label(k - 1));
-        path.replace(first, last, shortened);
+        path.replace(first, last, asTrajectory(*pushed, space_));
         return true;
     }
 
@@ -612,20 +625,11 @@ namespace ompl_mm
                 --first;
             if (end - first >= 2)
             {
-                ManipulationPath stretch(si_);
-                stretch.appendFirst(path.getState(first));
-                for (std::size_t k = first; k < end; ++k)
-                    stretch.appendLabelled(path.getState(k + 1), path.label(k));
+                ManipulationPath stretch = subPath(path, first, end);
                 const double before = stretch.toolPathLength();
                 shortenWithOMPL(stretch, rng, ptc);
                 if (stretch.toolPathLength() < before)
-                {
-                    Trajectory shorter(space_);
-                    shorter.reset(stretch.getState(0));
-                    for (std::size_t k = 1; k < stretch.getStateCount(); ++k)
-                        shorter.append(stretch.getState(k), stretch.label(k - 1));
-                    path.replace(first, end, shorter);
-                }
+                    path.replace(first, end, asTrajectory(stretch, space_));
             }
             end = first;
             while (end > 0 && path.label(end - 1).kind == PrimitiveKind::Push)
