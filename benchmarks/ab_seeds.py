@@ -8,7 +8,7 @@ plan quality from the JSON and the path files: mean tool-path length, pushes per
 object pushed back to where it stood before), push reversals (a push moving an object back against
 the push before, ManipulationPath::pushReversals) and the smoothing time. Standard library only.
 
-Example (before/after figures of a change):
+Example (before/after figures of a change; of a scene's settings: one binary twice, --new-scene):
   benchmarks/ab_seeds.py /tmp/old/ompl_mm_plan build/apps/ompl_mm_plan scenes/mobile_blocked.xml --seeds 50
 """
 import argparse
@@ -67,6 +67,8 @@ def main():
     parser.add_argument("old")
     parser.add_argument("new")
     parser.add_argument("scene")
+    parser.add_argument("--new-scene", help="the scene the new binary plans (default: the same scene; "
+                        "compare a scene's settings with one binary given twice)")
     parser.add_argument("--seeds", type=int, default=50, help="number of seeds (1..N), default 50")
     parser.add_argument("--first-seed", type=int, default=1)
     parser.add_argument("--quality", action="store_true",
@@ -83,7 +85,8 @@ def main():
     with tempfile.TemporaryDirectory() as workdir:
         for seed in range(args.first_seed, args.first_seed + args.seeds):
             old.append(run_with_quality(args.old, args.scene, seed, workdir, args.args, args.quality))
-            new.append(run_with_quality(args.new, args.scene, seed, workdir, args.args, args.quality))
+            new.append(run_with_quality(args.new, args.new_scene or args.scene, seed, workdir, args.args,
+                                        args.quality))
             same += same_values(old[-1], new[-1])
     print(describe("old", old))
     print(describe("new", new))

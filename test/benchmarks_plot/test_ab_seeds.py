@@ -1,9 +1,13 @@
 #!/usr/bin/env python3
 """Tests for benchmarks/ab_seeds.py: two run records count as the same result when they agree on
-every value both write but the times and the peak memory, which differ between any two runs; and
-push reversals counted from a path file's rows as the library counts them. Standard library only."""
+every value both write but the times and the peak memory, which differ between any two runs; the
+new binary plans --new-scene when given; and push reversals counted from a path file's rows as the
+library counts them. Standard library only."""
 import os
+import subprocess
 import sys
+import tempfile
+import textwrap
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -30,6 +34,36 @@ class SameValues(unittest.TestCase):
 
     def test_a_key_only_one_build_writes_does_not_count(self):
         self.assertTrue(ab_seeds.same_values(record(), record(clearings=0)))
+
+
+class NewScene(unittest.TestCase):
+    """A stand-in app writes the scene it was given into its record, so the records agree exactly
+    when both sides planned the same scene."""
+
+    def compare(self, *options):
+        with tempfile.TemporaryDirectory() as directory:
+            app = os.path.join(directory, "app")
+            with open(app, "w") as f:
+                f.write(textwrap.dedent(f"""\
+                    #!{sys.executable}
+                    import json, sys
+                    args = sys.argv[1:]
+                    record = {{"scene": args[0], "seed": int(args[args.index("--seed") + 1]),
+                              "solved": True, "time_s": 0.1}}
+                    json.dump(record, open(args[args.index("--json") + 1], "w"))
+                    """))
+            os.chmod(app, 0o755)
+            script = os.path.join(HERE, "..", "..", "benchmarks", "ab_seeds.py")
+            result = subprocess.run([sys.executable, script, app, app, "a.xml", "--seeds", "2", *options],
+                                    capture_output=True, text=True, check=True)
+        return result.stdout
+
+    def test_without_it_both_plan_the_scene(self):
+        self.assertIn("identical results (all values both write, but times): 2/2 seeds", self.compare())
+
+    def test_with_it_the_new_binary_plans_it(self):
+        self.assertIn("identical results (all values both write, but times): 0/2 seeds",
+                      self.compare("--new-scene", "b.xml"))
 
 
 def rows(*moves):
