@@ -92,7 +92,8 @@ namespace ompl_mm
 
         /** OMPL's hook: the state a fraction t of the way from `from` to `to`. Objects carried at
             either end move with the tool (their grasp interpolated between the ends' grasps), the
-            rest interpolate per subspace. state may be from or to. */
+            rest interpolate per subspace; t = 0 and t = 1 give `from` and `to` exactly (bit for
+            bit, so a joint at its limit stays within it). state may be from or to. */
         void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t,
                          ompl::base::State *state) const override;
         /** What interpolate() needs of a motion's ends, for a motion interpolated many times (as

@@ -344,6 +344,15 @@ namespace ompl_mm
     void ManipulationStateSpace::interpolate(const ob::State *from, const ob::State *to, double t,
                                              ob::State *state, const MotionEnds &ends) const
     {
+        // the ends exactly: from + (to - from) * 1 may differ from `to` in the last bit, which puts
+        // a joint that inverse kinematics left at its limit outside it
+        if (t == 0.0 || t == 1.0)
+        {
+            const ob::State *end = t == 0.0 ? from : to;
+            if (end != state)
+                copyState(state, end);
+            return;
+        }
         getSubspace(0)->interpolate(from->as<StateType>()->components[0], to->as<StateType>()->components[0],
                                     t, state->as<StateType>()->components[0]);
         const Eigen::Isometry3d toolAt =

@@ -294,6 +294,28 @@ TEST_F(MobileSpace, InterpolationStartsAndEndsAtItsEndpoints)
     space_.freeState(to);
 }
 
+TEST(ManipulationStateSpaceArm, InterpolationAtItsEndsGivesTheEndsExactly)
+{
+    // the joint from 1.1 to its lower limit, -3 (inverse kinematics leaves joints exactly at their
+    // limits): 1.1 + (-3 - 1.1) * 1 is -3.0000000000000004 in floating point, out of the limits, so
+    // a motion to a valid state would end in an invalid one
+    ManipulationStateSpace space(makeModel(unitArmScene()));
+    ob::State *from = space.allocState();
+    ob::State *to = space.allocState();
+    ob::State *at = space.allocState();
+    space.robotValues(from)[0] = 1.1;
+    space.robotValues(to)[0] = -3.0;
+    ASSERT_TRUE(space.satisfiesBounds(to));
+    space.interpolate(from, to, 1.0, at);
+    EXPECT_EQ(space.robotValues(at)[0], -3.0);
+    EXPECT_TRUE(space.satisfiesBounds(at));
+    space.interpolate(to, from, 0.0, at);
+    EXPECT_EQ(space.robotValues(at)[0], -3.0);
+    space.freeState(at);
+    space.freeState(to);
+    space.freeState(from);
+}
+
 TEST(ManipulationStateSampler, NearSamplesKeepTheObjectsAndMoveTheRobotWithinTheDistance)
 {
     const ManipulationStateSpacePtr space =

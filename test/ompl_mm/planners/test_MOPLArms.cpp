@@ -7,6 +7,7 @@
 #include "common/MobileBlocked.h"
 #include "common/MoplIterations.h"
 #include "ompl_core/run/GlobalSeed.h"
+#include "ompl_mm/base/ManipulationValidityChecker.h"
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 
 #include <ompl/base/PlannerData.h>
@@ -78,6 +79,7 @@ namespace
     void recheck(const ManipulationStateSpace &space, const ManipulationPath &path, const Scene &scene)
     {
         const RobotModel &robot = space.model()->robot();
+        const ManipulationValidityChecker checker(path.getSpaceInformation());
         ompl::base::State *between = space.allocState();
         for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i)
         {
@@ -87,7 +89,8 @@ namespace
             {
                 space.interpolate(a, b, static_cast<double>(k) / STEPS, between);
                 // the state check, which knows nothing of how motions are checked between states
-                ASSERT_TRUE(path.getSpaceInformation()->isValid(between)) << "segment " << i << " at " << k;
+                ASSERT_TRUE(path.getSpaceInformation()->isValid(between))
+                    << "segment " << i << " at " << k << ": " << checker.explain(between);
                 for (unsigned int j = 0; j < robot.dof(); ++j)
                     ASSERT_GE(space.robotValues(between)[j], robot.variableJoint(j).lower - 1e-12);
                 unsigned int held = 0;
