@@ -460,7 +460,8 @@ namespace
         scene.robotGoal.joints.clear();
         ompl_core::reseedOmpl(seed);
         auto setup = std::make_unique<ManipulationSetup>(scene);
-        EXPECT_EQ(setup->solve(60.0), ob::PlannerStatus::EXACT_SOLUTION);
+        // the scene's limit: under the sanitizers a search takes ten times as long
+        EXPECT_EQ(setup->solve(scene.timeLimit), ob::PlannerStatus::EXACT_SOLUTION);
         return setup;
     }
 
@@ -475,9 +476,9 @@ namespace
 
 TEST(SimplifierOnMeka, ACarryOnOneLevelBecomesAPushAndOneBetweenLevelsStays)
 {
-    // seeds 2 to 6 carry bottle1 in the search; with this one the push comes out shorter (without
-    // the step, the plan carries it)
-    const std::unique_ptr<ManipulationSetup> setup = mekaWithTwoBottles(6);
+    // the search carries bottle1 with this seed; its push comes out shorter, 2.08 against 2.27 m
+    // of tool travel (without the step, the plan carries it)
+    const std::unique_ptr<ManipulationSetup> setup = mekaWithTwoBottles(1);
     ASSERT_TRUE(setup->haveExactSolutionPath());
     const ManipulationPath &path = solution(*setup);
     EXPECT_GE(countLabels(path, PrimitiveKind::Push, BOTTLE1), 1u);
