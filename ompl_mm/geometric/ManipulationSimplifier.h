@@ -2,8 +2,9 @@
 
 #include "ompl_mm/geometric/ManipulationMotionValidator.h"
 #include "ompl_mm/geometric/ManipulationPath.h"
+#include "ompl_mm/geometric/PathRouter.h"
+#include "ompl_mm/geometric/PushReversalRemover.h"
 #include "ompl_mm/geometric/ToolPathStraightener.h"
-#include "ompl_mm/geometric/TransitConnector.h"
 #include "ompl_mm/primitives/EmptySpacePlanner.h"
 
 #include <ompl/base/Goal.h>
@@ -23,10 +24,11 @@ namespace ompl_mm
            object, or at one of its waypoints short of the start) and the object stays there for
            the rest of the way, if the goal still holds; a push that moves an object back
            against the push of it before (ManipulationPath::pushReversals) is dropped or made
-           shorter, the push before ending where it comes nearest to where the object is wanted
-           (endReversal); then every push run ends as early as
-           it may (dropped, or ended at one of its waypoints, the object staying there for the rest
-           of the way) when the goal still holds and the tool travels no farther;
+           shorter, the push run before ending where it comes nearest to where the object is
+           wanted, or the object is pushed aside instead of back (PushReversalRemover); then every
+           push run ends as early as it may (dropped, or ended at one of its waypoints, the object
+           staying there for the rest of the way) when the goal still holds and the tool travels
+           no farther;
         2. replans random windows of the path, from the start of one primitive run to the end of
            a later one, with the empty-space planner (the primitives chained straight from the
            window's first to its last state: one push instead of several of the same object, no
@@ -107,63 +109,12 @@ namespace ompl_mm
         /** Removes one round trip if it can (trying until ptc is true); true when the path changed. */
         bool removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng,
                              const ompl::base::PlannerTerminationCondition &ptc) const;
-        /** Ends each push reversal (ManipulationPath::pushReversals) that it can: the earlier push
-            ended early (endReversal()), else dropped, else the object pushed once to where the
-            later pushes leave it (pushOnceInstead()); the last reversal first (each tried once,
-            until ptc is true); returns how many. */
-        unsigned int removeReversals(ManipulationPath &path, ompl::RNG &rng,
-                                     const ompl::base::PlannerTerminationCondition &ptc) const;
-        /** Ends the reversal's earlier push where it comes nearest to where the later push leaves
-            the object (drop: at its start), keeps the object there until the later push, and
-            moves it from there to that end with the empty-space planner's primitives (none when
-            it is there already), the robot routed around the object where its old motions meet
-            it. True when every motion of that is valid (the path then changed; its states after
-            the later push stay as they were). */
-        bool endReversal(ManipulationPath &path, const ManipulationPath::PushReversal &reversal, bool drop,
-                         ompl::RNG &rng, const ompl::base::PlannerTerminationCondition &ptc) const;
-        /** Instead of the reversal's earlier push and the later push run, pushes the object from
-            where the earlier push begins straight to where that run leaves it (the empty-space
-            planner's primitives), then takes the robot on along its old way, the object staying
-            there, routed around it where the old motions meet it. True when every motion of that
-            is valid (the path then changed; its states after the later run stay as they were). */
-        bool pushOnceInstead(ManipulationPath &path, const ManipulationPath::PushReversal &reversal,
-                             ompl::RNG &rng, const ompl::base::PlannerTerminationCondition &ptc) const;
-        /** Chains the motions between consecutive states into result (reset to the first state):
-            each motion as it is when valid; else the robot routed (TransitConnector, within
-            routeIterations and until ptc is true) to the next valid state that only the robot's
-            motions lead to. False when neither works for some motion. */
-        bool routeThrough(const std::vector<ompl::base::State *> &states, Trajectory &result,
-                          unsigned int routeIterations, ompl::RNG &rng,
-                          const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Ends each push run at its earliest waypoint after which the object may stay where it
-            is for the rest of the way (holdObject), the run's start first (no push at all), when
-            the end still satisfies goal and the tool travels no farther; returns how many runs
-            changed. */
+            is for the rest of the way (PathRouter::holdObject), the run's start first (no push at
+            all), when the end still satisfies goal and the tool travels no farther; returns how
+            many runs changed. */
         unsigned int shortenPushes(ManipulationPath &path, const ompl::base::Goal *goal, ompl::RNG &rng,
                                    const ompl::base::PlannerTerminationCondition &ptc) const;
-        /** Keeps `object` at `pose` in states first … last (the path's states elsewhere unchanged):
-            its pushes become the robot's transits, and where the robot's old motion meets the
-            object it is routed around it (TransitConnector, within routeIterations and until ptc is
-            true). True when that gives valid motions and the end still satisfies goal (the path
-            then changed). */
-        bool holdObject(ManipulationPath &path, unsigned int object, const ObjectPose &pose,
-                        std::size_t first, std::size_t last, const ompl::base::Goal *goal,
-                        unsigned int routeIterations, ompl::RNG &rng,
-                        const ompl::base::PlannerTerminationCondition &ptc) const;
-        /** Appends copies of path's states first … last with `object` at pose to states. */
-        void appendHeld(const ManipulationPath &path, std::size_t first, std::size_t last,
-                        unsigned int object, const ObjectPose &pose,
-                        std::vector<ompl::base::State *> &states) const;
-        /** Appends copies of trajectory's states from first on to states. */
-        void appendCopies(const Trajectory &trajectory, std::size_t first,
-                          std::vector<ompl::base::State *> &states) const;
-        /** Frees the states and empties the vector. */
-        void freeAll(std::vector<ompl::base::State *> &states) const;
-        /** Chains states (routeThrough) and, when that works, puts the result in place of path's
-            states first … last; frees the states (and empties the vector) either way. */
-        bool replaceRouted(ManipulationPath &path, std::size_t first, std::size_t last,
-                           std::vector<ompl::base::State *> &states, unsigned int routeIterations,
-                           ompl::RNG &rng, const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Shortens path with one round of the steps of OMPL's PathSimplifier (see the class
             comment); leaves it as it is when ptc becomes true before the round's copy is checked. */
         void shortenWithOMPL(ManipulationPath &path, ompl::RNG &rng,
@@ -190,7 +141,8 @@ namespace ompl_mm
         mutable EmptySpacePlanner planner_;
         /** the empty-space planner of the push primitives alone (those that end where asked) */
         mutable EmptySpacePlanner pushPlanner_;
-        TransitConnector connector_;
+        PathRouter router_;
+        PushReversalRemover reversals_;
         mutable ToolPathStraightener straightener_;
         bool pushesSimulated_;  ///< see pushesSimulated()
     };

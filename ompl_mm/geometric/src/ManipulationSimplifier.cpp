@@ -20,9 +20,8 @@ namespace ompl_mm
         constexpr double SAME_POSE = 1e-6;
         // calls of OMPL's shortcutPath in a round, each trying as many shortcuts as the path has states
         constexpr unsigned int SHORTCUT_PASSES = 5;
-        // RRT iterations to route the robot around an object it no longer pushes: after a round
-        // trip, and (fewer: each push run tries several waypoints) after a push that ends early
-        constexpr unsigned int CONNECT_ITERATIONS = 500;
+        // RRT iterations to route the robot around an object it no longer pushes after a push
+        // that ends early (fewer than PathRouter's: each push run tries several waypoints)
         constexpr unsigned int SHORTER_PUSH_CONNECT_ITERATIONS = 50;
         // empty-space plans of pushes tried in place of a carry (each push primitive's inverse
         // kinematics draws new solutions each time)
@@ -154,7 +153,8 @@ namespace ompl_mm
           planner_(space_, validator_ ? validator_->primitives() : std::vector<PrimitivePtr>()),
           pushPlanner_(space_,
                        exactPushes(validator_ ? validator_->primitives() : std::vector<PrimitivePtr>())),
-          connector_(si),
+          router_(si, validator_),
+          reversals_(si, validator_),
           straightener_(si)
     {
         if (!validator_)
@@ -184,7 +184,7 @@ namespace ompl_mm
             outcome.carriesPushed = pushCarries(path, rng, stop);
             while (!ptc && removeRoundTrip(path, goal, rng, stop))
                 ++outcome.roundTripsRemoved;
-            outcome.reversalsRemoved = removeReversals(path, rng, stop);
+            outcome.reversalsRemoved = reversals_.remove(path, goal, rng, stop);
             outcome.pushesShortened = shortenPushes(path, goal, rng, stop);
         }
         // windows from one primitive run's start to a later run's end: what OMPL's shortcuts cannot
@@ -292,10 +292,10 @@ namespace ompl_mm
                 continue;
             // then the robot on to where the carry ends, routed where the straight motions collide
             std::vector<ompl::base::State *> states;
-            appendCopies(push, 0, states);
+            router_.appendCopies(push, 0, states);
             states.push_back(si_->cloneState(path.getState(last)));
-            const bool found = routeThrough(states, routed, CARRY_ROUTE_ITERATIONS, rng, ptc);
-            freeAll(states);
+            const bool found = router_.routeThrough(states, routed, CARRY_ROUTE_ITERATIONS, rng, ptc);
+            router_.freeAll(states);
             if (!found)
                 continue;
             if (!carried)
@@ -333,12 +333,13 @@ namespace ompl_mm
                     // leave the object where it was; or, when that fails, end the return early (where
                     // it found the object, or at one of its waypoints short of the start) and leave
                     // the object there for the rest of the way
-                    if (holdObject(path, object, before, runs[i].first, runs[j].second, goal,
-                                   CONNECT_ITERATIONS, rng, ptc))
+                    if (router_.holdObject(path, object, before, runs[i].first, runs[j].second, goal,
+                                           PathRouter::CONNECT_ITERATIONS, rng, ptc))
                         return true;
                     for (std::size_t stop = runs[j].first; stop < runs[j].second && !ptc; ++stop)
-                        if (holdObject(path, object, space_->objectPose(path.getState(stop), object), stop,
-                                       path.getStateCount() - 1, goal, CONNECT_ITERATIONS, rng, ptc))
+                        if (router_.holdObject(path, object, space_->objectPose(path.getState(stop), object),
+                                               stop, path.getStateCount() - 1, goal,
+                                               PathRouter::CONNECT_ITERATIONS, rng, ptc))
                             return true;
                 }
         }
@@ -371,8 +372,8 @@ namespace ompl_mm
             const auto heldFrom = [&](std::size_t stop, ManipulationPath &held)
             {
                 const ObjectPose pose = space_->objectPose(path.getState(stop), run.object);
-                return holdObject(held, run.object, pose, stop, path.getStateCount() - 1, goal,
-                                  SHORTER_PUSH_CONNECT_ITERATIONS, rng, ptc) &&
+                return router_.holdObject(held, run.object, pose, stop, path.getStateCount() - 1, goal,
+                                          SHORTER_PUSH_CONNECT_ITERATIONS, rng, ptc) &&
                        held.toolPathLength() <= length;
             };
             // no push at all first; else bisect for the earliest waypoint of the run that will do
@@ -400,190 +401,6 @@ namespace ompl_mm
             }
         }
         return shortened;
-    }
-
-    bool ManipulationSimplifier::holdObject(ManipulationPath &path, unsigned int object,
-                                            const ObjectPose &pose, std::size_t first, std::size_t last,
-                                            const ompl::base::Goal *goal, unsigned int routeIterations,
-                                            ompl::RNG &rng,
-                                            const ompl::base::PlannerTerminationCondition &ptc) const
-    {
-        std::vector<ompl::base::State *> held;
-        appendHeld(path, first, last, object, pose, held);
-        const bool endKept =
-            last + 1 < path.getStateCount() || space_->equalStates(held.back(), path.getState(last));
-        // the end decides before any routing is tried
-        if (!(endKept || (goal && goal->isSatisfied(held.back()))))
-        {
-            freeAll(held);
-            return false;
-        }
-        // the robot's old motions meet the held object where it was pushed before
-        return replaceRouted(path, first, last, held, routeIterations, rng, ptc);
-    }
-
-    void ManipulationSimplifier::appendHeld(const ManipulationPath &path, std::size_t first, std::size_t last,
-                                            unsigned int object, const ObjectPose &pose,
-                                            std::vector<ompl::base::State *> &states) const
-    {
-        for (std::size_t k = first; k <= last; ++k)
-        {
-            states.push_back(si_->cloneState(path.getState(k)));
-            space_->setObjectPose(states.back(), object, pose);
-        }
-    }
-
-    void ManipulationSimplifier::appendCopies(const Trajectory &trajectory, std::size_t first,
-                                              std::vector<ompl::base::State *> &states) const
-    {
-        for (std::size_t k = first; k < trajectory.size(); ++k)
-            states.push_back(si_->cloneState(trajectory.state(k)));
-    }
-
-    void ManipulationSimplifier::freeAll(std::vector<ompl::base::State *> &states) const
-    {
-        for (ompl::base::State *state : states)
-            si_->freeState(state);
-        states.clear();
-    }
-
-    bool ManipulationSimplifier::replaceRouted(ManipulationPath &path, std::size_t first, std::size_t last,
-                                               std::vector<ompl::base::State *> &states,
-                                               unsigned int routeIterations, ompl::RNG &rng,
-                                               const ompl::base::PlannerTerminationCondition &ptc) const
-    {
-        Trajectory result(space_);
-        const bool routed = routeThrough(states, result, routeIterations, rng, ptc);
-        freeAll(states);
-        if (routed)
-            path.replace(first, last, result);
-        return routed;
-    }
-
-    bool ManipulationSimplifier::routeThrough(const std::vector<ompl::base::State *> &states,
-                                              Trajectory &result, unsigned int routeIterations,
-                                              ompl::RNG &rng,
-                                              const ompl::base::PlannerTerminationCondition &ptc) const
-    {
-        result.reset(states[0]);
-        for (std::size_t k = 0; k + 1 < states.size();)
-        {
-            if (ptc)
-                return false;
-            const std::optional<SegmentLabel> label = validator_->explain(states[k], states[k + 1]);
-            if (label && si_->checkMotion(states[k], states[k + 1]))
-            {
-                result.append(states[k + 1], *label);
-                ++k;
-                continue;
-            }
-            // route the robot to the next valid state that only the robot's motions lead to
-            std::size_t next = k + 1;
-            while (next < states.size() && !space_->anyObjectMoves(states[k], states[next]) &&
-                   !si_->isValid(states[next]))
-                ++next;
-            if (next == states.size() || space_->anyObjectMoves(states[k], states[next]) ||
-                !connector_.connect(result, states[next], routeIterations, rng, ptc))
-                return false;
-            k = next;
-        }
-        return true;
-    }
-
-    unsigned int ManipulationSimplifier::removeReversals(
-        ManipulationPath &path, ompl::RNG &rng, const ompl::base::PlannerTerminationCondition &ptc) const
-    {
-        // the last reversal first: a change replaces states from its earlier push on, so each
-        // reversal is tried once, those before it keeping their indices
-        unsigned int removed = 0;
-        std::size_t before = path.getStateCount();
-        while (!ptc)
-        {
-            std::optional<ManipulationPath::PushReversal> last;
-            for (const ManipulationPath::PushReversal &reversal : path.pushReversals())
-                if (reversal.earlier < before)
-                    last = reversal;
-            if (!last)
-                break;
-            // the earlier push ended early; else dropped (the push before it then meets the
-            // later); else pushed on at once to where the later pushes leave the object
-            if (endReversal(path, *last, false, rng, ptc) || endReversal(path, *last, true, rng, ptc) ||
-                pushOnceInstead(path, *last, rng, ptc))
-                ++removed;
-            before = last->earlier;
-        }
-        return removed;
-    }
-
-    bool ManipulationSimplifier::endReversal(ManipulationPath &path,
-                                             const ManipulationPath::PushReversal &reversal, bool drop,
-                                             ompl::RNG &rng,
-                                             const ompl::base::PlannerTerminationCondition &ptc) const
-    {
-        const std::size_t earlier = reversal.earlier;
-        const std::size_t later = reversal.later;
-        const unsigned int object = reversal.object;
-        const ompl::base::State *afterLater = path.getState(later + 1);
-        // the earlier push ends where it is nearest to where the later one leaves the object
-        const Eigen::Vector3d from = space_->objectPosition(path.getState(earlier), object);
-        const Eigen::Vector3d direction = space_->objectPosition(path.getState(earlier + 1), object) - from;
-        const double t = drop
-                             ? 0.0
-                             : std::clamp((space_->objectPosition(afterLater, object) - from).dot(direction) /
-                                              direction.squaredNorm(),
-                                          0.0, 1.0);
-        std::vector<ompl::base::State *> states{si_->cloneState(path.getState(earlier))};
-        if (t > 0.0)
-        {
-            states.push_back(si_->allocState());
-            space_->interpolate(path.getState(earlier), path.getState(earlier + 1), t, states.back());
-        }
-        // on the later push's line the object is where that push ends (to rounding, which no
-        // motion counts as moving it), and the empty-space planner below then only moves the robot
-        const ObjectPose held = space_->objectPose(states.back(), object);
-        // the object stays there until the later push, which then starts from there
-        appendHeld(path, earlier + 1, later, object, held, states);
-        Trajectory push(space_);
-        const EmptySpacePlanner::Outcome outcome =
-            planner_.plan(states.back(), afterLater, push, rng, ptc, true);
-        appendCopies(push, 1, states);
-        if (outcome == EmptySpacePlanner::Outcome::AlreadyThere)
-            states.push_back(si_->cloneState(afterLater));
-        if (outcome != EmptySpacePlanner::Outcome::Reached &&
-            outcome != EmptySpacePlanner::Outcome::AlreadyThere)
-        {
-            freeAll(states);
-            return false;
-        }
-        return replaceRouted(path, earlier, later + 1, states, CONNECT_ITERATIONS, rng, ptc);
-    }
-
-    bool ManipulationSimplifier::pushOnceInstead(ManipulationPath &path,
-                                                 const ManipulationPath::PushReversal &reversal,
-                                                 ompl::RNG &rng,
-                                                 const ompl::base::PlannerTerminationCondition &ptc) const
-    {
-        const unsigned int object = reversal.object;
-        std::size_t end = reversal.later + 1;  // the state after the later push run
-        while (end < path.getStateCount() - 1 && path.label(end).kind == PrimitiveKind::Push &&
-               path.label(end).object == static_cast<int>(object))
-            ++end;
-        const ObjectPose left = space_->objectPose(path.getState(end), object);
-        // from where the earlier push begins, the object pushed there (the robot ending anywhere)
-        ompl::base::State *target = si_->cloneState(path.getState(reversal.earlier));
-        space_->setObjectPose(target, object, left);
-        Trajectory push(space_);
-        const bool pushed = planner_.plan(path.getState(reversal.earlier), target, push, rng, ptc, true) ==
-                                EmptySpacePlanner::Outcome::Partial ||
-                            space_->equalStates(push.back(), target);
-        si_->freeState(target);
-        if (!pushed || space_->objectMoves(push.back(), path.getState(end), object))
-            return false;
-        // then the robot's old way on, the object staying there, routed around it
-        std::vector<ompl::base::State *> states;
-        appendCopies(push, 0, states);
-        appendHeld(path, reversal.earlier + 1, end, object, left, states);
-        return replaceRouted(path, reversal.earlier, end, states, CONNECT_ITERATIONS, rng, ptc);
     }
 
     bool ManipulationSimplifier::replanWindow(ManipulationPath &path, std::size_t first, std::size_t last,

@@ -95,27 +95,25 @@ namespace
             return path;
         }
 
-        /** obj2 pushed 0.4 m north from (0, 1.4), the robot walks round it to the north-west and
-            pushes it back south-east to (x, 1.6), then leaves west: the push north carried it
-            0.2 m past where it is wanted. */
-        ManipulationPath pushedPastAndBack(double x)
+        /** obj2 pushed 0.4 m north from (0, 1.4) (through each of ys on the way), the robot walks
+            round it to the north-west and pushes it back south-east to (x, y), then leaves west:
+            the push north carried it past where it is wanted. */
+        ManipulationPath pushedPastAndBack(double x, double y = 1.6, std::initializer_list<double> ys = {})
         {
-            const Eigen::Vector2d back = Eigen::Vector2d(x, -0.2).normalized() * STANDOFF;
-            ManipulationPath path(si_);
-            append(path, 0.0, 0.7, 0.0, 1.4, TRANSIT);
-            append(path, 0.0, 1.4 - STANDOFF, 0.0, 1.4, TRANSIT);
+            const Eigen::Vector2d back = Eigen::Vector2d(x, y - 1.8).normalized() * STANDOFF;
+            ManipulationPath path = pushedNorth(ys);
             append(path, 0.0, 1.8 - STANDOFF, 0.0, 1.8, PUSH_OBJ2);
             append(path, -0.5, 1.8 - STANDOFF, 0.0, 1.8, TRANSIT);
             append(path, -0.5, 1.8 + STANDOFF, 0.0, 1.8, TRANSIT);
             append(path, -back.x(), 1.8 - back.y(), 0.0, 1.8, TRANSIT);
-            append(path, x - back.x(), 1.6 - back.y(), x, 1.6, PUSH_OBJ2);
-            append(path, -0.6, 1.6 - back.y(), x, 1.6, TRANSIT);
+            append(path, x - back.x(), y - back.y(), x, y, PUSH_OBJ2);
+            append(path, -0.6, y - back.y(), x, y, TRANSIT);
             return path;
         }
 
         /** Expects the simplifier to remove the one push reversal of path, which leaves obj2 at
-            (x, 1.6), with obj2 never north of y = 1.6 and the path's ends kept. */
-        void expectReversalRemoved(ManipulationPath &path, double x)
+            (x, y), with obj2 never north of y and the path's ends kept. */
+        void expectReversalRemoved(ManipulationPath &path, double x, double y = 1.6)
         {
             ASSERT_TRUE(path.check());
             ASSERT_EQ(path.pushReversals().size(), 1u);
@@ -125,7 +123,7 @@ namespace
             EXPECT_TRUE(path.pushReversals().empty());
             expectValidAndSameEnds(path, original);
             for (std::size_t k = 0; k < path.getStateCount(); ++k)
-                EXPECT_LE(space_.objectPosition(path.getState(k), 1).y(), 1.6 + 1e-9) << "state " << k;
+                EXPECT_LE(space_.objectPosition(path.getState(k), 1).y(), y + 1e-9) << "state " << k;
             EXPECT_NEAR(space_.objectPosition(path.getState(path.getStateCount() - 1), 1).x(), x, 1e-12);
         }
 
@@ -180,6 +178,34 @@ namespace
             EXPECT_TRUE(goal.isSatisfied(end));
             EXPECT_NEAR((space_.objectPosition(end, 1) - Eigen::Vector3d(0.8, 0.0, 0.0)).norm(), 0.0, 1e-12);
         }
+    };
+
+    /** MOBILE BLOCKED's room with its blocks replaced by two that close it from west to east but
+        for a gap 1 m wide at x = 0, y = -0.2 … 0.2, obj2 standing in it (0, 0): too narrow for the
+        robot to pass obj2 unless obj2 stands against one side. */
+    Scene gapScene()
+    {
+        Scene scene = mobileBlockedScene();
+        scene.obstacles.erase(std::remove_if(scene.obstacles.begin(), scene.obstacles.end(),
+                                             [](const Obstacle &o) { return o.name.rfind("block", 0) == 0; }),
+                              scene.obstacles.end());
+        for (const double x : {-1.5, 1.5})
+        {
+            Obstacle block;
+            block.name = x < 0.0 ? "gap_west" : "gap_east";
+            block.shape.boxSize = Eigen::Vector3d(2.0, 0.4, 1.0);
+            block.pose.translation() = Eigen::Vector3d(x, 0.0, 0.5);
+            scene.obstacles.push_back(block);
+        }
+        scene.objects[0].start.position = Eigen::Vector3d(-2.0, 1.0, 0.0);
+        scene.objects[1].start.position = Eigen::Vector3d(0.0, 0.0, 0.0);
+        return scene;
+    }
+
+    class SimplifierGap : public Simplifier
+    {
+    protected:
+        SimplifierGap() : Simplifier(gapScene()) {}
     };
 }  // namespace
 
@@ -304,6 +330,44 @@ TEST_F(Simplifier, APushBackAtAnAngleBecomesAPushAcross)
     ManipulationPath path = pushedPastAndBack(0.2);
     expectReversalRemoved(path, 0.2);
     EXPECT_EQ(path.primitiveCounts().at("push"), 2u);
+}
+
+TEST_F(Simplifier, APushRunEndsInItsSegmentNearestToWhereTheObjectIsWanted)
+{
+    // the push north runs through (0, 1.6); the push back goes to (0.2, 1.5), nearest to the run's
+    // first segment: the run ends there, at (0, 1.5), and a push east brings obj2 on (ending it
+    // where its second segment begins, (0, 1.6), would leave a reversal; dropping it, one push)
+    ManipulationPath path = pushedPastAndBack(0.2, 1.5, {1.6});
+    expectReversalRemoved(path, 0.2, 1.5);
+    EXPECT_EQ(path.primitiveCounts().at("push"), 2u);
+}
+
+TEST_F(SimplifierGap, AnObjectInTheWayBothWaysIsPushedAsideInsteadOfBack)
+{
+    // the robot pushes obj2 north out of the gap to get through, walks round it and pushes it
+    // back south through the gap to get back: it can neither stay in the gap nor be pushed south
+    // at first (the robot is south of it), so the push back becomes one aside, east or west
+    ManipulationPath path(si_);
+    append(path, 0.0, -1.0, 0.0, 0.0, TRANSIT);
+    append(path, 0.0, -STANDOFF, 0.0, 0.0, TRANSIT);
+    append(path, 0.0, 1.0 - STANDOFF, 0.0, 1.0, PUSH_OBJ2);
+    append(path, -0.6, 1.0 - STANDOFF, 0.0, 1.0, TRANSIT);
+    append(path, -0.6, 1.0 + STANDOFF, 0.0, 1.0, TRANSIT);
+    append(path, 0.0, 1.0 + STANDOFF, 0.0, 1.0, TRANSIT);
+    append(path, 0.0, -1.0 + STANDOFF, 0.0, -1.0, PUSH_OBJ2);
+    append(path, 0.6, -1.0 + STANDOFF, 0.0, -1.0, TRANSIT);
+    ASSERT_TRUE(path.check());
+    ASSERT_EQ(path.pushReversals().size(), 1u);
+    const RobotAt goal(si_, 0.6, -1.0 + STANDOFF);
+    ompl::RNG rng(3);
+    EXPECT_EQ(simplifier_.simplify(path, 0, rng, &goal).reversalsRemoved, 1u);
+    EXPECT_TRUE(path.pushReversals().empty());
+    EXPECT_TRUE(path.check());
+    EXPECT_EQ(path.checkLabels(), "");
+    EXPECT_TRUE(goal.isSatisfied(path.getState(path.getStateCount() - 1)));
+    for (std::size_t k = 0; k < path.getStateCount(); ++k)
+        EXPECT_GE(space_.objectPosition(path.getState(k), 1).y(), 0.0)
+            << "obj2 never back south, state " << k;
 }
 
 TEST_F(Simplifier, APushNobodyNeedsIsDropped)
