@@ -11,11 +11,14 @@
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include <optional>
+
 namespace ompl_mm
 {
     /** Mode-aware smoothing of manipulation paths, the one MOPL applies to its solutions (OMPL's
         PathSimplifier only straightens motions one at a time and cannot drop a manipulation):
-        1. pushes what only slides: an object picked up and put down again on the level it stood
+        1. carries once what was carried twice in a row (carryOnce()), then pushes what only
+           slides: an object picked up and put down again on the level it stood
            on is pushed there instead when the push primitives can, the robot routed to the push
            and on to where the carry's transits led, and the tool travels less (pushCarries());
            then removes pointless manipulation: an object pushed away and later back to where it was is
@@ -56,6 +59,7 @@ namespace ompl_mm
         /** What simplify() did. */
         struct Outcome
         {
+            unsigned int carriesMerged{0};      ///< two carries of an object in a row made one
             unsigned int carriesPushed{0};      ///< carries replaced by pushes
             unsigned int roundTripsRemoved{0};  ///< objects no longer pushed away and back
             unsigned int reversalsRemoved{0};   ///< pushes no longer moving an object back
@@ -93,6 +97,37 @@ namespace ompl_mm
         static unsigned int countRoundTrips(const ManipulationPath &path);
 
     private:
+        /** Two carries of one object in a row (nothing else moving it between): states of the
+            first carry's start, its end, the second's start and end. */
+        struct CarryPair
+        {
+            unsigned int object;
+            std::size_t first, firstLast, secondFirst, secondLast;
+        };
+        /** Makes one carry of each pair of carries of an object in a row that it can: the object
+            carried from where the first carry picks it up straight to where the second puts it
+            down, the robot then on its old way between them (the object standing there, routed
+            around it) and on to where the transits after the second carry end; kept when every
+            motion is valid and, both ways shortened by OMPL's shortcuts, the tool travels less;
+            the last pair first. Returns how many pairs became one carry. */
+        unsigned int carryOnce(ManipulationPath &path, ompl::RNG &rng,
+                               const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** One pair of carries made one (see carryOnce(), a few carry plans and routes at most);
+            true when the path changed. */
+        bool carryOnceInstead(ManipulationPath &path, const CarryPair &pair, ompl::RNG &rng,
+                              const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** Chains states (PathRouter::routeThrough, CARRY_ROUTE_ITERATIONS; frees them) and,
+            when that works and the result, shortened by OMPL's shortcuts, makes the tool travel
+            less than path's states first … last shortened the same way (kept in before, made on
+            the first call), puts the result in shorter. */
+        void keepIfShorter(std::vector<ompl::base::State *> &states, const ManipulationPath &path,
+                           std::size_t first, std::size_t last, std::optional<ManipulationPath> &before,
+                           std::optional<ManipulationPath> &shorter, ompl::RNG &rng,
+                           const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** Puts replacement, when there is one, in place of path's states first … last; true when
+            it did. */
+        bool replaceWith(ManipulationPath &path, std::size_t first, std::size_t last,
+                         const std::optional<ManipulationPath> &replacement) const;
         /** Replaces each carry (a run of pickup and transfer segments of one object, with the
             robot's transits before and after it) that the push primitives can do instead: the
             object pushed from where it stands to where the carry puts it down, the robot routed

@@ -58,6 +58,16 @@ namespace ompl_mm
             return runsOf(path, object, {PrimitiveKind::Push});
         }
 
+        /** True when something moves `object` between path's states from and to. */
+        bool movesBetween(const ManipulationPath &path, unsigned int object, std::size_t from, std::size_t to)
+        {
+            const auto *space = path.getSpaceInformation()->getStateSpace()->as<ManipulationStateSpace>();
+            for (std::size_t k = from; k < to; ++k)
+                if (space->objectMoves(path.getState(k), path.getState(k + 1), object))
+                    return true;
+            return false;
+        }
+
         bool samePose(const ObjectPose &a, const ObjectPose &b)
         {
             return (a.position - b.position).norm() < SAME_POSE && std::abs(a.yaw - b.yaw) < SAME_POSE;
@@ -179,6 +189,7 @@ namespace ompl_mm
         const ompl::base::PlannerTerminationCondition &stop = inner.condition();
         const ManipulationMotionValidator::TerminationScope bounded(*validator_, stop);
         path.removeRepeatedStates();
+        outcome.carriesMerged = carryOnce(path, rng, stop);
         if (!pushesSimulated_)
         {
             outcome.carriesPushed = pushCarries(path, rng, stop);
@@ -281,7 +292,6 @@ namespace ompl_mm
         // compared after OMPL's shortcuts, which the later steps apply too (a route's detours
         // shrink more than the planner's transits do)
         Trajectory push(space_);
-        Trajectory routed(space_);
         std::optional<ManipulationPath> carried;
         std::optional<ManipulationPath> pushed;
         for (unsigned int attempt = 0; slides && attempt < CARRY_PUSH_TRIES && !pushed && !ptc; ++attempt)
@@ -294,25 +304,110 @@ namespace ompl_mm
             std::vector<ompl::base::State *> states;
             router_.appendCopies(push, 0, states);
             states.push_back(si_->cloneState(path.getState(last)));
-            const bool found = router_.routeThrough(states, routed, CARRY_ROUTE_ITERATIONS, rng, ptc);
-            router_.freeAll(states);
-            if (!found)
-                continue;
-            if (!carried)
-            {
-                carried.emplace(subPath(path, first, last));
-                shortcut(*carried, rng, ptc);
-            }
-            ManipulationPath candidate = asPath(routed, si_);
-            shortcut(candidate, rng, ptc);
-            if (candidate.toolPathLength() < carried->toolPathLength())
-                pushed.emplace(std::move(candidate));
+            keepIfShorter(states, path, first, last, carried, pushed, rng, ptc);
         }
         si_->freeState(target);
-        if (!pushed)
-            return false;
-        path.replace(first, last, asTrajectory(*pushed, space_));
-        return true;
+        return replaceWith(path, first, last, pushed);
+    }
+
+    void ManipulationSimplifier::keepIfShorter(std::vector<ompl::base::State *> &states,
+                                               const ManipulationPath &path, std::size_t first,
+                                               std::size_t last, std::optional<ManipulationPath> &before,
+                                               std::optional<ManipulationPath> &shorter, ompl::RNG &rng,
+                                               const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        Trajectory routed(space_);
+        const bool found = router_.routeThrough(states, routed, CARRY_ROUTE_ITERATIONS, rng, ptc);
+        router_.freeAll(states);
+        if (!found)
+            return;
+        if (!before)
+        {
+            before.emplace(subPath(path, first, last));
+            shortcut(*before, rng, ptc);
+        }
+        ManipulationPath candidate = asPath(routed, si_);
+        shortcut(candidate, rng, ptc);
+        if (candidate.toolPathLength() < before->toolPathLength())
+            shorter.emplace(std::move(candidate));
+    }
+
+    bool ManipulationSimplifier::replaceWith(ManipulationPath &path, std::size_t first, std::size_t last,
+                                             const std::optional<ManipulationPath> &replacement) const
+    {
+        if (replacement)
+            path.replace(first, last, asTrajectory(*replacement, space_));
+        return replacement.has_value();
+    }
+
+    unsigned int ManipulationSimplifier::carryOnce(ManipulationPath &path, ompl::RNG &rng,
+                                                   const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        // the last pair first: a change replaces states from its first carry's start on, so the
+        // pairs before it keep their indices
+        unsigned int merged = 0;
+        std::size_t before = path.getStateCount();
+        while (!ptc)
+        {
+            std::optional<CarryPair> last;
+            for (unsigned int object = 0; object < space_->objectCount(); ++object)
+            {
+                const auto carries = runsOf(path, object, {PrimitiveKind::Pickup, PrimitiveKind::Transfer});
+                for (std::size_t i = 0; i + 1 < carries.size(); ++i)
+                    if (carries[i].first < before && (!last || carries[i].first > last->first) &&
+                        !movesBetween(path, object, carries[i].second, carries[i + 1].first))
+                        last = CarryPair{object, carries[i].first, carries[i].second, carries[i + 1].first,
+                                         carries[i + 1].second};
+            }
+            if (!last)
+                break;
+            if (carryOnceInstead(path, *last, rng, ptc))
+                ++merged;
+            before = last->first;
+        }
+        return merged;
+    }
+
+    bool ManipulationSimplifier::carryOnceInstead(ManipulationPath &path, const CarryPair &pair,
+                                                  ompl::RNG &rng,
+                                                  const ompl::base::PlannerTerminationCondition &ptc) const
+    {
+        // with the robot's transits before the first carry and after the second, which the new
+        // carry's routes replace
+        const std::vector<SegmentLabel> &labels = path.labels();
+        std::size_t first = pair.first;
+        while (first > 0 && labels[first - 1].kind == PrimitiveKind::Transit)
+            --first;
+        std::size_t last = pair.secondLast;
+        while (last < labels.size() && labels[last].kind == PrimitiveKind::Transit)
+            ++last;
+        // from where the first carry begins, the object carried to where the second puts it down
+        const ObjectPose put = space_->objectPose(path.getState(pair.secondLast), pair.object);
+        ompl::base::State *target = si_->cloneState(path.getState(first));
+        space_->setObjectPose(target, pair.object, put);
+        Trajectory carry(space_);
+        std::optional<ManipulationPath> twice;
+        std::optional<ManipulationPath> once;
+        for (unsigned int attempt = 0; attempt < CARRY_PUSH_TRIES && !once && !ptc; ++attempt)
+        {
+            planner_.plan(path.getState(first), target, carry, rng, ptc, true);
+            // up to where it puts the object down
+            std::size_t down = 0;
+            while (down < carry.size() && space_->objectMoves(carry.state(down), target, pair.object))
+                ++down;
+            if (down == carry.size() || space_->anyObjectMoves(carry.state(down), target))
+                continue;
+            // then the robot's old way between the carries, the object standing where the second
+            // put it, and on to where the transits after the second carry end
+            std::vector<ompl::base::State *> states;
+            for (std::size_t k = 0; k <= down; ++k)
+                states.push_back(si_->cloneState(carry.state(k)));
+            router_.appendHeld(path, pair.firstLast + 1, pair.secondFirst, pair.object, put, states);
+            states.push_back(si_->cloneState(path.getState(last)));
+            keepIfShorter(states, path, first, last, twice, once, rng, ptc);
+        }
+        si_->freeState(target);
+        return replaceWith(path, first, last, once);
     }
 
     bool ManipulationSimplifier::removeRoundTrip(ManipulationPath &path, const ompl::base::Goal *goal,
