@@ -15,6 +15,22 @@ namespace ompl_mm
         // RRT iterations of the robot's routes past an object pushed aside: more than after a
         // round trip, as the object aside often narrows the robot's old way to a passage
         constexpr unsigned int ASIDE_ROUTE_ITERATIONS = 5000;
+
+        /** True when path's segment k pushes object. */
+        bool pushes(const ManipulationPath &path, std::size_t k, unsigned int object)
+        {
+            return path.label(k).kind == PrimitiveKind::Push &&
+                   path.label(k).object == static_cast<int>(object);
+        }
+
+        /** The state after the run of pushes of object that segment k is in. */
+        std::size_t afterPushRun(const ManipulationPath &path, std::size_t k, unsigned int object)
+        {
+            std::size_t end = k + 1;
+            while (end < path.getStateCount() - 1 && pushes(path, end, object))
+                ++end;
+            return end;
+        }
     }  // namespace
 
     PushReversalRemover::PushReversalRemover(const ompl::base::SpaceInformationPtr &si,
@@ -36,8 +52,9 @@ namespace ompl_mm
         std::size_t before = path.getStateCount();
         while (!ptc)
         {
+            const std::vector<ManipulationPath::PushReversal> reversals = path.pushReversals();
             std::optional<ManipulationPath::PushReversal> last;
-            for (const ManipulationPath::PushReversal &reversal : path.pushReversals())
+            for (const ManipulationPath::PushReversal &reversal : reversals)
                 if (reversal.earlier < before)
                     last = reversal;
             if (!last)
@@ -47,7 +64,7 @@ namespace ompl_mm
             // after which the path has fewer reversals (a way's new pushes may reverse too), else
             // the first after which it has as many, the reversal now earlier, where the loop
             // goes on
-            const std::size_t count = path.pushReversals().size();
+            const std::size_t count = reversals.size();
             const std::function<bool(ManipulationPath &)> ways[] = {
                 [&](ManipulationPath &p) { return endReversal(p, *last, false, rng, ptc); },
                 [&](ManipulationPath &p) { return endReversal(p, *last, true, rng, ptc); },
@@ -91,8 +108,7 @@ namespace ompl_mm
         // the earlier push run (its segments first … reversal.earlier) ends where it comes nearest
         // to where the later push leaves the object: in segment `cut`, at t along it
         std::size_t first = reversal.earlier;
-        while (first > 0 && path.label(first - 1).kind == PrimitiveKind::Push &&
-               path.label(first - 1).object == static_cast<int>(object))
+        while (first > 0 && pushes(path, first - 1, object))
             --first;
         std::size_t cut = first;
         double t = 0.0;
@@ -147,10 +163,7 @@ namespace ompl_mm
                                               const ompl::base::PlannerTerminationCondition &ptc) const
     {
         const unsigned int object = reversal.object;
-        std::size_t end = reversal.later + 1;  // the state after the later push run
-        while (end < path.getStateCount() - 1 && path.label(end).kind == PrimitiveKind::Push &&
-               path.label(end).object == static_cast<int>(object))
-            ++end;
+        const std::size_t end = afterPushRun(path, reversal.later, object);
         const ObjectPose left = space_->objectPose(path.getState(end), object);
         // from where the earlier push begins, the object pushed there (the robot ending anywhere)
         ompl::base::State *target = si_->cloneState(path.getState(reversal.earlier));
@@ -178,10 +191,7 @@ namespace ompl_mm
         const unsigned int object = reversal.object;
         const std::size_t later = reversal.later;
         const std::size_t last = path.getStateCount() - 1;
-        std::size_t end = later + 1;  // the state after the later push run
-        while (end < last && path.label(end).kind == PrimitiveKind::Push &&
-               path.label(end).object == static_cast<int>(object))
-            ++end;
+        const std::size_t end = afterPushRun(path, later, object);
         const ompl::base::State *from = path.getState(later);
         const Eigen::Vector3d there = space_->objectPosition(from, object);
         const Eigen::Vector3d wanted = space_->objectPosition(path.getState(end), object) - there;
