@@ -14,9 +14,9 @@
 namespace ompl_mm
 {
     /** Removes push reversals (ManipulationPath::pushReversals: a push moving an object back
-        against the push of it before), one of ManipulationSimplifier's steps. Four ways, in turn:
+        against the push of it before), one of ManipulationSimplifier's steps. Three ways, in turn:
         the earlier push run ended where it comes nearest to where the later push leaves the
-        object (endReversal), else dropped; else the object pushed once, from where the earlier
+        object (endReversal); else the object pushed once, from where the earlier
         push began, to where the later pushes leave it (pushOnceInstead); else pushed aside by the
         later run instead of back (pushAside). The object stays where a way leaves it meanwhile,
         the robot routed around it (PathRouter). Deterministic for a given RNG state; not
@@ -38,13 +38,13 @@ namespace ompl_mm
 
     private:
         /** Ends the reversal's earlier push run (the consecutive pushes of the object up to the
-            earlier push) where it comes nearest to where the later push leaves the object (drop:
-            at its start), keeps the object there until the later push, and moves it from there to
+            earlier push) where it comes nearest to where the later push leaves the object, keeps
+            the object there until the later push, and moves it from there to
             that end with the empty-space planner's primitives (none when it is there already),
             the robot routed around the object where its old motions meet it. True when every
             motion of that is valid (the path then changed; its states after the later push stay
             as they were). */
-        bool endReversal(ManipulationPath &path, const ManipulationPath::PushReversal &reversal, bool drop,
+        bool endReversal(ManipulationPath &path, const ManipulationPath::PushReversal &reversal,
                          ompl::RNG &rng, const ompl::base::PlannerTerminationCondition &ptc) const;
         /** Instead of the reversal's earlier push and the later push run, pushes the object from
             where the earlier push begins straight to where that run leaves it (the empty-space

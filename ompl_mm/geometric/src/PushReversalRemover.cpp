@@ -59,15 +59,14 @@ namespace ompl_mm
                     last = reversal;
             if (!last)
                 break;
-            // the earlier push run ended early; else dropped; else the object pushed on at once to
+            // the earlier push run ended early; else the object pushed on at once to
             // where the later pushes leave it; else the later run pushing it aside: the first way
             // after which the path has fewer reversals (a way's new pushes may reverse too), else
             // the first after which it has as many, the reversal now earlier, where the loop
             // goes on
             const std::size_t count = reversals.size();
             const std::function<bool(ManipulationPath &)> ways[] = {
-                [&](ManipulationPath &p) { return endReversal(p, *last, false, rng, ptc); },
-                [&](ManipulationPath &p) { return endReversal(p, *last, true, rng, ptc); },
+                [&](ManipulationPath &p) { return endReversal(p, *last, rng, ptc); },
                 [&](ManipulationPath &p) { return pushOnceInstead(p, *last, rng, ptc); },
                 [&](ManipulationPath &p) { return pushAside(p, *last, goal, rng, ptc); }};
             std::optional<ManipulationPath> asMany;
@@ -97,8 +96,7 @@ namespace ompl_mm
     }
 
     bool PushReversalRemover::endReversal(ManipulationPath &path,
-                                          const ManipulationPath::PushReversal &reversal, bool drop,
-                                          ompl::RNG &rng,
+                                          const ManipulationPath::PushReversal &reversal, ompl::RNG &rng,
                                           const ompl::base::PlannerTerminationCondition &ptc) const
     {
         const std::size_t later = reversal.later;
@@ -113,7 +111,7 @@ namespace ompl_mm
         std::size_t cut = first;
         double t = 0.0;
         double nearest = (space_->objectPosition(path.getState(first), object) - wanted).norm();
-        for (std::size_t k = first; k <= reversal.earlier && !drop; ++k)
+        for (std::size_t k = first; k <= reversal.earlier; ++k)
         {
             const Eigen::Vector3d from = space_->objectPosition(path.getState(k), object);
             const Eigen::Vector3d direction = space_->objectPosition(path.getState(k + 1), object) - from;
