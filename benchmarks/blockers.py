@@ -10,8 +10,7 @@ Standard library only.
 Example (where the robot must stand to push obj3 onto its goal in MOBILE BLOCKED):
   benchmarks/blockers.py scenes/mobile_blocked.xml --to -1.85 -1.85
 prints "2 objects in the way, 2 smallest sets:" and the sets, "obj1 obj4" and "obj2 obj4".
-Exit status: 0 found, 1 not within --max objects, 2 bad
-input.
+Exit status: 0 found, 1 not within --max objects, 2 bad input.
 """
 import argparse
 import collections
