@@ -38,10 +38,7 @@ class Grid:
         for i in range(self.size[0]):
             for j in range(self.size[1]):
                 x, y = self.point((i, j))
-                if (x - floor.low[0] < reach or floor.high[0] - x < reach or y - floor.low[1] < reach
-                        or floor.high[1] - y < reach or any(
-                            max(abs(x - bx) - hx, 0.0) ** 2 + max(abs(y - by) - hy, 0.0) ** 2 < reach ** 2
-                            for bx, by, hx, hy in floor.boxes)):
+                if floor.fixed_gap(x, y, reach) < 0.0:
                     self.wall.add((i, j))
                     continue
                 inside = [name for name, (ox, oy, r) in zip(names, floor.discs)

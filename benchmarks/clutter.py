@@ -65,14 +65,17 @@ class Floor:
                 self.clear.append([float(x), float(y)])
         self.robot_diameter = 2 * robot_radius
 
-    def gap(self, x, y, r):
-        """The free gap from a disc at (x, y) of radius r to the nearest box, wall or object."""
+    def fixed_gap(self, x, y, r):
+        """The free gap from a disc at (x, y) of radius r to the nearest box or the floor's edge."""
         gaps = [x - self.low[0] - r, self.high[0] - x - r, y - self.low[1] - r, self.high[1] - y - r]
         for bx, by, hx, hy in self.boxes:
             dx, dy = max(abs(x - bx) - hx, 0.0), max(abs(y - by) - hy, 0.0)
             gaps.append(math.hypot(dx, dy) - r)
-        gaps += [math.hypot(x - ox, y - oy) - r - orad for ox, oy, orad in self.discs]
         return min(gaps)
+
+    def gap(self, x, y, r):
+        """The free gap from a disc at (x, y) of radius r to the nearest box, wall or object."""
+        return min([self.fixed_gap(x, y, r)] + [math.hypot(x - ox, y - oy) - r - orad for ox, oy, orad in self.discs])
 
     def place(self, rng, radius, blocking, region=None):
         """A free spot for one more disc of radius (touching nothing): within region (x min, y min,

@@ -16,9 +16,9 @@ namespace ompl_mm
     /** Removes push reversals (ManipulationPath::pushReversals: a push moving an object back
         against the push of it before), one of ManipulationSimplifier's steps. Three ways, in turn:
         the earlier push run ended where it comes nearest to where the later push leaves the
-        object (endReversal); else the object pushed once, from where the earlier
-        push began, to where the later pushes leave it (pushOnceInstead); else pushed aside by the
-        later run instead of back (pushAside). The object stays where a way leaves it meanwhile,
+        object (endReversal); else the object pushed once, from where the earlier push began, to
+        where the later pushes leave it (pushOnceInstead); else pushed aside by the later run
+        instead of back (pushAside). The object stays where a way leaves it meanwhile,
         the robot routed around it (PathRouter). Deterministic for a given RNG state; not
         thread-safe (it reuses its empty-space planner's scratch space). */
     class PushReversalRemover
@@ -39,8 +39,8 @@ namespace ompl_mm
     private:
         /** Ends the reversal's earlier push run (the consecutive pushes of the object up to the
             earlier push) where it comes nearest to where the later push leaves the object, keeps
-            the object there until the later push, and moves it from there to
-            that end with the empty-space planner's primitives (none when it is there already),
+            the object there until the later push, and moves it from there to that end with the
+            empty-space planner's primitives (none when it is there already),
             the robot routed around the object where its old motions meet it. True when every
             motion of that is valid (the path then changed; its states after the later push stay
             as they were). */
